@@ -490,6 +490,10 @@ read as "where is ..." ("find ...", ``WHERE_MEANS``); the verb of being after th
 (``WHERE_BE``). Said before "where" only; "do you know how many ..." stays a wish to know."""
 WHERE_BE = frozenset(["is", "are", "'s", "was", "were", "went", "goes", "go", "gone", "got to", "has gone", "have gone",
                       "ended up", "has got to", "have got to", "might be", "could be", "would be", "can be"])
+TOTALS = frozenset(["in total", "in all", "total", "all told", "altogether", "all together", "overall",
+                    "in sum", "all in all"])
+"""Words that say a count is of all the things ("how many people are in the office *in total*?"): a count counts
+them all, so they add nothing to it (words41: "in total" was read as a place, "total" refused)."""
 INFORMATION = frozenset(["name", "names", "pose", "poses", "gesture", "gestures", "gender", "genders"])
 """What the robot reports of a person, as the GPSR generator asks it ("tell me the *name* of the person at the
 door": its ``persInfo`` are name, pose and gesture; 2018's templates ask the gender too): given or brought to
@@ -501,7 +505,9 @@ NUMBER_OF = frozenset(["tell me the number of", "tell me the total number of", "
                        "check the number of", "figure out the number of", "work out the number of",
                        "give me a count of", "give me the count of", "get me a count of", "i want a count of",
                        "i need a count of", "i'd like a count of", "do a count of", "take a count of",
-                       "give me a headcount of", "do a headcount of", "take a headcount of"])
+                       "give me a headcount of", "do a headcount of", "take a headcount of",
+                       "what is the count of", "what 's the count of", "what is the total count of",
+                       "what 's the total count of"])
 """Asking for a count by its number ("*tell me the number of* toys on the desk", "*what number of* people
 ..."), or by a count asked for ("*give me a count of* the people in the lounge", "*do a headcount of* the guests":
 words33): it means "tell me how many ..." (``NUMBER_MEANS``, a unit of counting when the library has it)."""

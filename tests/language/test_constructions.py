@@ -3824,3 +3824,17 @@ def test_a_number_after_which_and_a_polite_of_you_to(text: str, want: list[tuple
         assert tell.frame == "Tell" and tell.elements["message"].text == want[0][1]["message"]
         return
     assert_reads(text, want, library)
+
+
+@pytest.mark.parametrize(("text", "want"), [
+    ("how many guests are in the garden in total?", [("Count", {"theme": "guest", "ground": "garden"})]),
+    ("how many guests in all are in the garden", [("Count", {"theme": "guest", "ground": "garden"})]),
+    ("how many jars are there total in the shed", [("Count", {"theme": "jar", "ground": "shed"})]),
+    ("count the jars in the shed altogether", [("Count", {"theme": "jar", "ground": "shed"})]),
+    ("what's the count of guests in the garden", [("Count", {"theme": "guest", "ground": "garden"})]),
+    ("put the jars in the shed in total darkness", [("Place", {"theme": "jar", "goal": "shed"})]),   # as before
+])
+def test_a_word_of_totality_in_a_count_adds_nothing(text: str, want: list[tuple[str, dict[str, str]]] | None,
+                                                    library: Library) -> None:
+    """words41: "in total" was read as the place ("ground: total"), "total" refused; "what's the count of" told."""
+    assert_reads(text, want, library)

@@ -148,6 +148,7 @@ INSIDE: tuple[Rule, ...] = (
     statements.TOLD_HOW_TO,
     requests.HOW_MANY_SEEN,
     requests.HOW_MANY_DOING,
+    requests.TOTAL_DROPPED,
     requests.HOW_MANY_SAID,
     verbs.MOVED_YOURSELF,
     politeness.FILLER_INSIDE,

@@ -53,6 +53,7 @@ from seal_cli.language.english import (
     STATE_PARTICLES,
     SWITCHED_MEANS,
     TIME_WORDS,
+    TOTALS,
     WH_WORDS,
     WHERE_ASKERS,
     WHERE_BE,
@@ -946,6 +947,25 @@ def _how_many_doing(s: State, i: int) -> Match | None:
     else:
         return None
     return Match(1, (_unsaid(words[i].start, Tag.BE, None, "are"), words[i].tagged(tag, low)))
+
+
+def _total_dropped(s: State, i: int) -> Match | None:
+    """"how many people are in the office *in total*?", "how many people *in all* are in the house", "count the
+    cups *altogether*": in a count, a word of totality (:data:`~seal_cli.language.english.TOTALS`) after the counted
+    or a place, before the end, a comma, "are"/"is" or a preposition, adds nothing: dropped (words41)."""
+    if s.verb_index < 0 or not (str(s.out[s.verb_index].info).endswith(_COUNTED) or
+                                s.out[s.verb_index].info == _COUNTING) or \
+            s.prev_tag() not in (Tag.WORD, Tag.BE, Tag.THERE, Tag.HERE, Tag.NAME):
+        return None
+    n = _phrase(s, i, TOTALS)
+    nxt = s.next_lower(i + n - 1) if n else ""
+    if not n or nxt and nxt not in END_MARKS and nxt not in (",", "are", "is", "there") and nxt not in PREPOSITIONS:
+        return None
+    return Match(n)
+
+
+_COUNTING = "count"
+"""Count's plain unit ("count the cups *in total*")."""
 
 
 _COUNTED_PHRASE = frozenset([Tag.WORD, Tag.DET, Tag.PREP, Tag.NUM, Tag.POSS, Tag.OF])
@@ -2085,6 +2105,12 @@ HOW_MANY_SEEN = Rule("how many X can you see", _how_many_seen, (
     Example("How many dishes can you see on the dining table?", "can", ""),
     Example("how many cups do you find in the kitchen", "do", ""),
 ), _SEEN_AUXILIARIES, "'how many X can you see': who counts, dropped (the things are X)")
+TOTAL_DROPPED = Rule("in total, of a count", _total_dropped, (
+    Example("how many people are in the office in total?", "in total", ""),
+    Example("how many people in all are in the house", "in all", ""),
+    Example("how many people are there total in the office", "total", ""),
+), first_words(TOTALS), "'in total', 'altogether' in a count: dropped (a count counts all)",
+    after=frozenset([Tag.WORD, Tag.BE, Tag.THERE, Tag.HERE, Tag.NAME]))
 HOW_MANY_DOING = Rule("how many X do", _how_many_doing, (
     Example("How many people in the kitchen wear a hat?", "wear", Tag.VBG_T),
     Example("how many people in the bedroom raise their left arm", "raise", Tag.VBG_T),
