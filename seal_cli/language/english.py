@@ -439,7 +439,8 @@ REQUESTS = frozenset(["i'd like", "i would like", "i should like", "i'd love", "
                       "we could really use", "i could do with", "i could really do with", "we could do with",
                       "i could just do with", "i'd really like", "i would really like", "i'd quite like",
                       "i'd really love", "i really need", "i just need", "need", "i am wanting", "i'm wanting",
-                      "i am needing", "i'm needing", "we are needing", "we're needing",
+                      "i am needing", "i'm needing", "we are needing", "we're needing", "i am in need of",
+                      "i'm in need of", "we are in need of", "we're in need of",
                       *(f"{modal} i {bother} you for" for modal in ("could", "can", "may", "might")
                         for bother in ("trouble", "bother")),
                       "we'd love", "we would love", "i wouldn't mind", "i would not mind", "we wouldn't mind",
@@ -507,7 +508,8 @@ NUMBER_OF = frozenset(["tell me the number of", "tell me the total number of", "
                        "i need a count of", "i'd like a count of", "do a count of", "take a count of",
                        "give me a headcount of", "do a headcount of", "take a headcount of",
                        "what is the count of", "what 's the count of", "what is the total count of",
-                       "what 's the total count of"])
+                       "what 's the total count of", "let me know the number of", "let us know the number of",
+                       "report back the number of", "report the total number of"])
 """Asking for a count by its number ("*tell me the number of* toys on the desk", "*what number of* people
 ..."), or by a count asked for ("*give me a count of* the people in the lounge", "*do a headcount of* the guests":
 words33): it means "tell me how many ..." (``NUMBER_MEANS``, a unit of counting when the library has it)."""

@@ -47,8 +47,9 @@ _JOINT_AFTER = re.compile(r"^(?:\s|[,.;!?]|\band\b|\bthen\b|\bplease\b|\bjust\b|
 """What may stand between a question and the telling after it: the joints of clauses and sentences, and politeness
 ("... ? Tell me, please", "... and then let me know")."""
 
-_JOINT_BEFORE = re.compile(r"^\s*[,:]\s*$")
-"""What stands between a telling said first and its question: a comma or a colon ("Tell me, who is at the door?")."""
+_JOINT_BEFORE = re.compile(r"^\s*[,:;\-\u2013\u2014]\s*$")
+"""What stands between a telling said first and its question: a comma, a colon or a dash ("Tell me, who is at the
+door?", "tell me - which fruit is the biggest?": words41)."""
 
 
 def merge_reported(parse: Parse, library: Library) -> Parse:

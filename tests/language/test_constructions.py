@@ -3838,3 +3838,31 @@ def test_a_word_of_totality_in_a_count_adds_nothing(text: str, want: list[tuple[
                                                     library: Library) -> None:
     """words41: "in total" was read as the place ("ground: total"), "total" refused; "what's the count of" told."""
     assert_reads(text, want, library)
+
+
+@pytest.mark.parametrize(("text", "want"), [
+    ("before going to the shed, grab the rake from the porch",
+     [("Pick", {"theme": "rake", "source": "porch"}), ("Go", {"goal": "shed"})]),
+    ("after greeting Ada in the hall, guide her to the den",
+     [("Greet", {"theme": "Ada", "ground": "hall"}), ("Guide", {"theme": "Ada", "goal": "den"})]),
+    ("I'm in need of a blanket from the attic",
+     [("Bring", {"theme": "blanket", "recipient": "me", "source": "attic"})]),
+    ("let me know the number of guests in the garden", [("Count", {"theme": "guest", "ground": "garden"})]),
+])
+def test_a_clause_of_an_ing_form_said_first_and_needs(text: str, want: list[tuple[str, dict[str, str]]],
+                                                      library: Library) -> None:
+    """words41: "before going to X, V" was done in the order said (Go first); "I'm in need of X" was a Bring to a
+    name "I'm", then Guide, silently; "let me know the number of X" was a Tell."""
+    assert_reads(text, want, library)
+
+
+@pytest.mark.parametrize(("text", "want"), [
+    ("tell me which of the vases in the hall is the tallest", "which of the vases in the hall is the tallest"),
+    ("let me know who of the guests is standing", "who of the guests is standing"),
+    ("tell me - which vase is the tallest?", "which vase is the tallest"),
+])
+def test_which_of_told_and_a_dash_after_tell_me(text: str, want: str, library: Library) -> None:
+    """words41: "which of" after "tell me" was refused at "of"; "tell me -" before a question was a Tell of nothing
+    and a second Tell."""
+    (tell,) = parse_command(text, library).frames
+    assert tell.frame == "Tell" and tell.elements["message"].text == want

@@ -298,6 +298,22 @@ def _on_the_way(s: State, i: int) -> Match | None:
     return s.emit(i, comma + 1 - i, Tag.POLITE)
 
 
+_BEFORE_GERUND = frozenset(["before"])
+"""The subordinator whose clause of an -ing form, said before the command, is done after it ("*before going* to the
+bedroom, grab the towel"; "after V-ing", "while V-ing" are read by ``politeness.WHILE_HOLDING``, in the order said)."""
+
+
+def _subordinate_gerund(s: State, i: int) -> Match | None:
+    """"*Before* going to the bedroom, grab the towel", "before answering her question, meet her at the door": a
+    subordinator, then the -ing form of a verb of the library, opens a clause said before the command, as "before you
+    go" does: the subordinator is kept (words41: "before" was read as a manner adverb, and the clause done first)."""
+    low = s.words[i].lower
+    nxt = s.next_lower(i)
+    if low not in _BEFORE_GERUND or not nxt or gerund_lemma(nxt) in (None, nxt) or s.verb_at(i + 1) is None:
+        return None
+    return s.emit(i, 1, Tag.POLITE, low)
+
+
 def _manner(s: State, i: int) -> Match | None:
     low = s.words[i].lower
     if low.isalpha() and low not in PARTICLES and is_adverb(low) and s.verb_after(i + 1) and _not_a_verb(s, i):
@@ -513,6 +529,10 @@ def _manner_first(low: str) -> bool:
     return low.isalpha() and low not in PARTICLES and is_adverb(low)
 
 
+SUBORDINATE_GERUND = Rule("subordinator before an -ing form", _subordinate_gerund, (
+    Example("Before going to the bedroom, grab the towel", "Before", Tag.POLITE),
+    Example("before answering her question, meet her at the door", "before", Tag.POLITE),
+), _BEFORE_GERUND, "'before V-ing, ...': the subordinator of a clause said first")
 MANNER = Rule("manner adverb", _manner, (
     Example("Gently place the eggs in the bowl", "Gently", Tag.POLITE),
 ), _manner_first, "a manner adverb before the verb")

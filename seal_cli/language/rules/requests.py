@@ -964,6 +964,15 @@ def _total_dropped(s: State, i: int) -> Match | None:
     return Match(n)
 
 
+def _which_of(s: State, i: int) -> Match | None:
+    """"tell me *which of* the objects on the desk is the smallest", "let me know who of the guests is standing":
+    "of" right after the question word of a question told is read as "which *one of*" is, a quantifier (words41:
+    "of" after "which" was refused)."""
+    if s.prev_tag() != Tag.WH or s.out[-1].lower not in ("which", "who") or not s.np_starts(i + 1):
+        return None
+    return Match(1, (s.words[i].tagged(Tag.NUM, 1),))
+
+
 _COUNTING = "count"
 """Count's plain unit ("count the cups *in total*")."""
 
@@ -1592,6 +1601,9 @@ def _wish_after(s: State, head: int) -> int | None:
                 s.verb_at(k) is not None and words[k - 1].lower not in DETERMINERS and not relative:
             return None
         k += 1
+    if k < len(words) and words[k - 1].lower in PREPOSITIONS:
+        return None                                   # "I'm in *need* of a towel": a noun, no wish (words41: it was
+        #                                               Bring to "I'm" and Guide, silently)
     return k if k < len(words) and _wish_at(s, k) and k > head + 1 else None
 
 
@@ -2105,6 +2117,10 @@ HOW_MANY_SEEN = Rule("how many X can you see", _how_many_seen, (
     Example("How many dishes can you see on the dining table?", "can", ""),
     Example("how many cups do you find in the kitchen", "do", ""),
 ), _SEEN_AUXILIARIES, "'how many X can you see': who counts, dropped (the things are X)")
+WHICH_OF = Rule("which of, told", _which_of, (
+    Example("tell me which of the objects on the desk is the smallest", "of", Tag.NUM),
+    Example("let me know who of the guests is standing", "of", Tag.NUM),
+), frozenset(["of"]), "'which of the X' in a question told: 'which one of the X'", after=frozenset([Tag.WH]))
 TOTAL_DROPPED = Rule("in total, of a count", _total_dropped, (
     Example("how many people are in the office in total?", "in total", ""),
     Example("how many people in all are in the house", "in all", ""),
