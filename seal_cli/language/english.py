@@ -491,6 +491,11 @@ read as "where is ..." ("find ...", ``WHERE_MEANS``); the verb of being after th
 (``WHERE_BE``). Said before "where" only; "do you know how many ..." stays a wish to know."""
 WHERE_BE = frozenset(["is", "are", "'s", "was", "were", "went", "goes", "go", "gone", "got to", "has gone", "have gone",
                       "ended up", "has got to", "have got to", "might be", "could be", "would be", "can be"])
+TOPICS = frozenset(["as for", "regarding", "concerning", "as regards", "with regard to", "with regards to",
+                    "speaking of", "talking of", "talking about", "as to"])
+"""Words that name what the sentence is about before it ("*as for* the person in the kitchen, what is she wearing?",
+"*regarding* the cup on the table, bring it to me"): the phrase after them is said first, as a bare one is
+(words41: they were refused as unknown verbs)."""
 TOTALS = frozenset(["in total", "in all", "total", "all told", "altogether", "all together", "overall",
                     "in sum", "all in all"])
 """Words that say a count is of all the things ("how many people are in the office *in total*?"): a count counts

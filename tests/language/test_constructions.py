@@ -1965,7 +1965,7 @@ def test_how_much_of_a_plural_and_which_room(
 
 
 def test_how_much_of_a_mass_noun_and_which_room_is_biggest_are_read_as_before(library: Library) -> None:
-    with pytest.raises(CommandError, match="unknown verb 'how'"):
+    with pytest.raises(CommandError, match="is a question the robot cannot answer"):   # words41: said as one
         parse_command("how much milk is left?", library)
     assert [f for f, _ in frames("which room is the biggest?", library)] == ["Tell"]
 
@@ -3866,3 +3866,20 @@ def test_which_of_told_and_a_dash_after_tell_me(text: str, want: str, library: L
     and a second Tell."""
     (tell,) = parse_command(text, library).frames
     assert tell.frame == "Tell" and tell.elements["message"].text == want
+
+
+@pytest.mark.parametrize(("text", "want"), [
+    ("as for the vase in the hall, bring it to me",
+     [("Bring", {"theme": "vase", "recipient": "me", "source": "hall"})]),
+    ("regarding the man at the gate, greet him", [("Greet", {"theme": "man", "ground": "gate"})]),
+    ("speaking of the garage, how many jars are there?", [("Count", {"theme": "jar", "ground": "garage"})]),  # a room
+])
+def test_what_the_sentence_is_about_said_first(text: str, want: list[tuple[str, dict[str, str]]],
+                                              library: Library) -> None:
+    """words41: "as for", "regarding", "speaking of" were refused as unknown verbs."""
+    assert_reads(text, want, library)
+
+
+def test_a_question_after_regarding_is_told_whole(library: Library) -> None:
+    (tell,) = parse_command("regarding the jars on the shelf, which is the oldest?", library).frames
+    assert tell.frame == "Tell" and tell.elements["message"].text.startswith("regarding the jars")

@@ -76,6 +76,7 @@ CLAUSE_START: tuple[Rule, ...] = (
     requests.WHICH_PLACE,
     requests.QUESTION,
     requests.FRONTED_QUESTION,
+    requests.TOPIC_FIRST,
     requests.PHRASE_ASKED,
     requests.PHRASE_COUNTED,
     requests.WHERE,

@@ -53,6 +53,7 @@ from seal_cli.language.english import (
     STATE_PARTICLES,
     SWITCHED_MEANS,
     TIME_WORDS,
+    TOPICS,
     TOTALS,
     WH_WORDS,
     WHERE_ASKERS,
@@ -962,6 +963,23 @@ def _total_dropped(s: State, i: int) -> Match | None:
     if not n or nxt and nxt not in END_MARKS and nxt not in (",", "are", "is", "there") and nxt not in PREPOSITIONS:
         return None
     return Match(n)
+
+
+def _topic_first(s: State, i: int) -> Match | None:
+    """"*As for* the cup on the table, bring it to me", "*regarding* the person at the door, greet her": a word
+    naming what the sentence is about (:data:`~seal_cli.language.english.TOPICS`), before a noun phrase, a comma
+    and a clause, is politeness: the phrase after it is said first, as a bare one is ("the cup on the table, bring
+    it to me"; words41)."""
+    words = s.words
+    n = _phrase(s, i, TOPICS)
+    if not n or any(w.tag != Tag.POLITE for w in s.out) or not s.np_starts(i + n):
+        return None
+    comma = next((k for k in range(i + n + 1, min(len(words), i + n + 12)) if words[k].lower in (",", ";", ":")
+                  or words[k].lower in END_MARKS), None)
+    if comma is None or words[comma].lower not in (",", ";", ":") or not (
+            s.verb_after(comma + 1) or _clause_at(s, comma + 1)):
+        return None
+    return s.emit(i, n, Tag.POLITE)
 
 
 def _which_of(s: State, i: int) -> Match | None:
@@ -2117,6 +2135,11 @@ HOW_MANY_SEEN = Rule("how many X can you see", _how_many_seen, (
     Example("How many dishes can you see on the dining table?", "can", ""),
     Example("how many cups do you find in the kitchen", "do", ""),
 ), _SEEN_AUXILIARIES, "'how many X can you see': who counts, dropped (the things are X)")
+TOPIC_FIRST = Rule("what the sentence is about, first", _topic_first, (
+    Example("As for the cup on the table, bring it to me", "As for", Tag.POLITE),
+    Example("regarding the person at the door, greet her", "regarding", Tag.POLITE),
+), first_words(TOPICS), "'as for X, ...', 'regarding X, ...': politeness; X is said first",
+    after=frozenset([START, Tag.POLITE]))
 WHICH_OF = Rule("which of, told", _which_of, (
     Example("tell me which of the objects on the desk is the smallest", "of", Tag.NUM),
     Example("let me know who of the guests is standing", "of", Tag.NUM),
@@ -2247,7 +2270,8 @@ def _fronted_question(s: State, i: int) -> Match | None:
     """A phrase said before a question ("*On the table,* which object is lightest?"): the phrase is part
     of what to tell."""
     words = s.words
-    if QUESTION_MEANS not in s.lexicon.units or not match_phrase(words, i, PREPOSITIONS) and words[i].lower != "of":
+    if QUESTION_MEANS not in s.lexicon.units or not match_phrase(words, i, PREPOSITIONS) and words[i].lower != "of" \
+            and not match_phrase(words, i, TOPICS):   # "*regarding* the jars on the shelf, which is the oldest?"
         return None
     k = i + 1
     while k < len(words) and words[k].lower not in END_MARKS and words[k].lower not in (",", ";") and \
@@ -2432,7 +2456,9 @@ FRONTED_OF = Rule("of-phrase first", _fronted_of, (
 FRONTED_QUESTION = Rule("phrase said before a question", _fronted_question, (
     Example("On the table, which object is lightest?", "On the table, which object is lightest", Tag.SAID),
     Example("in the garage which car is the oldest?", "in the garage which car is the oldest", Tag.SAID),
-), first_words(PREPOSITIONS) | {"of"},
+    Example("Regarding the jars on the shelf, which is the oldest?", "Regarding the jars on the shelf, which is the "
+            "oldest", Tag.SAID),
+), first_words(PREPOSITIONS) | {"of"} | first_words(TOPICS),
     "a phrase and a comma before a question: all of it is what to tell")
 PHRASE_ASKED = Rule("phrase said before a question that takes it up", _phrase_asked, (
     Example("The heaviest jar on the shelf, what is it?", "The heaviest jar on the shelf, what is it", Tag.SAID),
