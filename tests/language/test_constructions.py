@@ -2753,7 +2753,8 @@ def test_a_place_said_before_a_question_of_someone_there(text: str, want: list[t
 @pytest.mark.parametrize(("text", "want"), [
     ("in the garage which car is the oldest?", [("Tell", {"message": "in the garage which car is the oldest"})]),
     ("Out of the plates on the rack which one is the widest?", [("Tell", {})]),
-    ("in the garage which car is the oldest", None),                   # no question mark: no question said
+    ("in the garage which car is the oldest",                          # no question mark at the command's end:
+     [("Tell", {"message": "in the garage which car is the oldest"})]),  # a question all the same (words41)
     ("in the box which is red put the cup?", None),                    # a command after "which": no question
 ])
 def test_a_phrase_before_a_question_without_its_comma(text: str, want: list[tuple[str, dict[str, str]]] | None,
