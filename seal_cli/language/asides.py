@@ -13,7 +13,7 @@ from __future__ import annotations
 from collections.abc import Sequence
 from typing import TYPE_CHECKING
 
-from seal_cli.language.english import END_MARKS
+from seal_cli.language.english import CHECK_WHETHER, END_MARKS, PARTICLES
 from seal_cli.language.morphology import verb_lemma
 from seal_cli.language.tokens import Word
 
@@ -58,10 +58,36 @@ def _clause_in(lexicon: Lexicon, words: Sequence[Word], start: int, end: int) ->
     return False
 
 
+_ASKED_NEXT = frozenset(["who", "what", "which", "whose", "what's", "who's", "how", "where", "if", "whether"])
+"""Words that open the question after "for me" in "find out *for me* how many ...", "check for me which ..."."""
+
+
+def _for_whom_before_question(lexicon: Lexicon, words: Sequence[Word], i: int) -> bool:
+    """Whether "for me" ("for us") at ``i`` stands between a verb of the library and the question it asks ("could
+    you find out *for me* how many people are in the office?", "check for me which object is the heaviest"; words41:
+    "for me" cut the verb from its question — refused, or a LookAt of the question): whom the answer is for, said
+    beside it. Set aside as a remark, the verb and its question are read as said together."""
+    if words[i].lower != "for" or i + 2 >= len(words) or words[i + 1].lower not in ("me", "us") or \
+            words[i + 2].lower not in _ASKED_NEXT:
+        return False
+    for j in range(max(0, i - 3), i):
+        if " ".join(w.lower for w in words[j:i]) in CHECK_WHETHER[0]:
+            return True                             # "figure out for me": a verb of checking (english.CHECK_WHETHER)
+        found = lexicon.verb_at(words, j, i)
+        if found is not None and all(w.lower in PARTICLES for w in words[j + found[1]:i]):
+            return True                             # "find *out* for me": the verb and its particle
+    return False
+
+
 def set_aside(lexicon: Lexicon, words: Sequence[Word]) -> tuple[list[Word], list[tuple[int, int]]]:
     """The words of the command with its asides taken out, and the character spans of those asides (remarks).
     A bracket of an aside that holds a clause is taken out alone."""
     said = {w.lower for w in words}
+    if "for" in said and ("me" in said or "us" in said):
+        found = next((i for i in range(1, len(words)) if _for_whom_before_question(lexicon, words, i)), None)
+        if found is not None:                       # "find out *for me* how many ...": whom it is done for, beside
+            rest, remarks = set_aside(lexicon, [*words[:found], *words[found + 2:]])
+            return rest, sorted([(words[found].start, words[found + 1].end), *remarks])
     if "(" not in said and ")" not in said and (";" not in said or not any(_dash(w) for w in words)):
         return list(words), []                      # the commonest case: nothing to set aside, asked cheaply
     kept: list[Word] = []

@@ -49,6 +49,10 @@ _OBJECT_PERSONS = frozenset(["me", "him", "her", "them", "us"])
 """Object pronouns that can be the person a thing is given to ("give *him* the keys and *her* the coat")."""
 
 
+_SOME_THING = frozenset(["something", "anything", "everything"])
+"""Indefinite pronouns of a thing that may be the second object ("tell Jo in the hall *something* about yourself")."""
+
+
 class Clauses:
     """The clause passes for one command (its text) and one library."""
 
@@ -223,9 +227,9 @@ class Clauses:
                 break
             k += 1
         second = items[k] if k < len(items) else None
-        if not isinstance(second, NP) or not second.determined or second.kind == "person" or \
-                not self.receives(verb):
-            return
+        if not isinstance(second, NP) or not (second.determined or second.pronoun in _SOME_THING) or \
+                second.kind == "person" or not self.receives(verb):
+            return                      # "tell the man in the hall *something* about yourself" (words41)
         person = objects[0]
         for pp in items[:k]:
             assert isinstance(pp, PP)

@@ -455,7 +455,8 @@ REQUESTS = frozenset(["i'd like", "i would like", "i should like", "i'd love", "
                       "we could really use", "i could do with", "i could really do with", "we could do with",
                       "i could just do with", "i'd really like", "i would really like", "i'd quite like",
                       "i'd really love", "i really need", "i just need", "need", "i am wanting", "i'm wanting",
-                      "i am needing", "i'm needing", "we are needing", "we're needing",
+                      "i am needing", "i'm needing", "we are needing", "we're needing", "i am in need of",
+                      "i'm in need of", "we are in need of", "we're in need of",
                       *(f"{modal} i {bother} you for" for modal in ("could", "can", "may", "might")
                         for bother in ("trouble", "bother")),
                       "we'd love", "we would love", "i wouldn't mind", "i would not mind", "we wouldn't mind",
@@ -506,6 +507,19 @@ read as "where is ..." ("find ...", ``WHERE_MEANS``); the verb of being after th
 (``WHERE_BE``). Said before "where" only; "do you know how many ..." stays a wish to know."""
 WHERE_BE = frozenset(["is", "are", "'s", "was", "were", "went", "goes", "go", "gone", "got to", "has gone", "have gone",
                       "ended up", "has got to", "have got to", "might be", "could be", "would be", "can be"])
+TOPICS = frozenset(["as for", "regarding", "concerning", "as regards", "with regard to", "with regards to",
+                    "speaking of", "talking of", "talking about", "as to"])
+"""Words that name what the sentence is about before it ("*as for* the person in the kitchen, what is she wearing?",
+"*regarding* the cup on the table, bring it to me"): the phrase after them is said first, as a bare one is
+(words41: they were refused as unknown verbs)."""
+TOTALS = frozenset(["in total", "in all", "total", "all told", "altogether", "all together", "overall",
+                    "in sum", "all in all"])
+"""Words that say a count is of all the things ("how many people are in the office *in total*?"): a count counts
+them all, so they add nothing to it (words41: "in total" was read as a place, "total" refused)."""
+INFORMATION = frozenset(["name", "names", "pose", "poses", "gesture", "gestures", "gender", "genders"])
+"""What the robot reports of a person, as the GPSR generator asks it ("tell me the *name* of the person at the
+door": its ``persInfo`` are name, pose and gesture; 2018's templates ask the gender too): given or brought to
+someone, such a word is told (words41)."""
 NUMBER_OF = frozenset(["tell me the number of", "tell me the total number of", "what is the number of",
                        "what 's the number of", "what is the total number of", "what 's the total number of",
                        "what number of", "give me the number of", "tell me the count of", "report the number of",
@@ -513,7 +527,10 @@ NUMBER_OF = frozenset(["tell me the number of", "tell me the total number of", "
                        "check the number of", "figure out the number of", "work out the number of",
                        "give me a count of", "give me the count of", "get me a count of", "i want a count of",
                        "i need a count of", "i'd like a count of", "do a count of", "take a count of",
-                       "give me a headcount of", "do a headcount of", "take a headcount of"])
+                       "give me a headcount of", "do a headcount of", "take a headcount of",
+                       "what is the count of", "what 's the count of", "what is the total count of",
+                       "what 's the total count of", "let me know the number of", "let us know the number of",
+                       "report back the number of", "report the total number of"])
 """Asking for a count by its number ("*tell me the number of* toys on the desk", "*what number of* people
 ..."), or by a count asked for ("*give me a count of* the people in the lounge", "*do a headcount of* the guests":
 words33): it means "tell me how many ..." (``NUMBER_MEANS``, a unit of counting when the library has it)."""

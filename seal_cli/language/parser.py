@@ -365,6 +365,11 @@ def _explain(error: Any, text: str, words: Sequence[Word], lexicon: Lexicon) -> 
             return CommandError(f"{_said_from(text, words, token.start_pos)!r} asks the robot not to do something: "
                                 f"no frame of the library does that; say what it should do (it can "
                                 f"{_either(list(lexicon.can))})", column, text, ["a verb"])
+        if _asks(words, token.start_pos):
+            return CommandError(f"{_said_from(text, words, token.start_pos)!r} is a question the robot cannot answer:"
+                                f" it tells what is where, how many there are, which thing is the biggest, lightest "
+                                f"..., who a person is and what they wear or do; else say what it should do (it can "
+                                f"{_either(list(lexicon.can))})", column, text, ["a verb"])
         if _states(lexicon, text, words[token.start_pos].start):
             return CommandError(f"{_said_from(text, words, token.start_pos)!r} is a statement, no command: "
                                 f"say what the robot should do (it can "
@@ -388,6 +393,23 @@ def _explain(error: Any, text: str, words: Sequence[Word], lexicon: Lexicon) -> 
         return CommandError(f"the command ends too early{after}: expected {_either(expected)}", column, text,
                             expected)
     return CommandError(f"unexpected {str(token)!r}{after}: expected {_either(expected)}", column, text, expected)
+
+
+_ASKING_NEXT = frozenset(["is", "are", "was", "were", "'s", "do", "does", "did", "can", "could", "will", "would",
+                          "should", "has", "have", "old", "heavy", "big", "long", "far", "much", "tall", "often"])
+"""Words after a question word that make it a question ("*why is* the fridge open?", "*how old* is ...")."""
+
+
+def _asks(words: Sequence[Word], k: int) -> bool:
+    """Whether the words from ``k`` are a question no rule read as one the robot answers ("why is the fridge
+    open?", "how heavy is the box?"; words41: they were refused as statements): a question word where the clause
+    starts, then an auxiliary or "how"'s adjective, or a question mark ending its sentence."""
+    low = words[k].lower
+    if low not in WH_WORDS or low in ("if", "whether"):
+        return False
+    nxt = words[k + 1].lower if k + 1 < len(words) else ""
+    end = next((w.lower for w in words[k + 1:] if w.lower in (".", "!", "?", ";")), "")
+    return nxt in _ASKING_NEXT or end == "?"
 
 
 def _states(lexicon: Lexicon, text: str, start: int) -> bool:

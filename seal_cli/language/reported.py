@@ -32,10 +32,13 @@ from seal_cli.language.english import SPEAKER_PRONOUNS, WH_WORDS
 from seal_cli.language.searches import SEARCH, renumbered
 from seal_cli.language.values import Evoked, Parse, Phrase
 
-__all__ = ["TELLING", "merge_reported", "told_answers"]
+__all__ = ["COUNTING", "TELLING", "merge_reported", "told_answers"]
 
 TELLING = "Tell"
 """The frame that reports to a person; a telling with no message is the one merged."""
+
+COUNTING = "Count"
+"""The frame that counts: a count of nothing said after one reports it."""
 
 _ANSWER_AGAIN = frozenset(["it", "that", "this", "the answer"])
 """A telling's message that is the answer of the question before it ("find out his name and tell *it* to Jo")."""
@@ -44,8 +47,9 @@ _JOINT_AFTER = re.compile(r"^(?:\s|[,.;!?]|\band\b|\bthen\b|\bplease\b|\bjust\b|
 """What may stand between a question and the telling after it: the joints of clauses and sentences, and politeness
 ("... ? Tell me, please", "... and then let me know")."""
 
-_JOINT_BEFORE = re.compile(r"^\s*[,:]\s*$")
-"""What stands between a telling said first and its question: a comma or a colon ("Tell me, who is at the door?")."""
+_JOINT_BEFORE = re.compile(r"^\s*[,:;\-\u2013\u2014]\s*$")
+"""What stands between a telling said first and its question: a comma, a colon or a dash ("Tell me, who is at the
+door?", "tell me - which fruit is the biggest?": words41)."""
 
 
 def merge_reported(parse: Parse, library: Library) -> Parse:
@@ -119,7 +123,10 @@ def _asks(text: str, frame: Evoked) -> bool:
 
 def _reports(telling: Evoked, question: Evoked) -> bool:
     """Whether ``telling`` only reports the answer of ``question``: a Tell with no message and no element but the
-    person told, who is the speaker unless the question's own frame tells someone."""
+    person told, who is the speaker unless the question's own frame tells someone; or a count that names nothing
+    after a count ("count the dishes *and let me know how many there are*", words41: a second Count of nothing)."""
+    if telling.frame == COUNTING and question.frame == COUNTING and not telling.elements:
+        return True
     if telling.frame != TELLING or set(telling.elements) - {"recipient", "message"}:
         return False
     asked_of, told_to = question.elements.get("recipient"), telling.elements.get("recipient")

@@ -40,3 +40,21 @@ def test_a_clause_or_a_lone_mark_is_no_aside(text: str, kept: list[str], library
 def test_dashes_before_any_verb_set_nothing_aside(library: Library) -> None:
     assert _aside("mugs - the shelf - put them there", library) == (
         ["mugs", ";", "the", "shelf", ";", "put", "them", "there"], [])
+
+
+@pytest.mark.parametrize(("text", "kept", "remarks"), [
+    ("find out for me how many jars are in the shed",
+     ["find", "out", "how", "many", "jars", "are", "in", "the", "shed"], ["for me"]),
+    ("check for us which vase is the tallest", ["check", "which", "vase", "is", "the", "tallest"], ["for us"]),
+    ("figure out for me who is at the gate (quickly)", ["figure", "out", "who", "is", "at", "the", "gate"],
+     ["for me", "quickly"]),
+])
+def test_for_me_between_a_verb_and_its_question_is_set_aside(text: str, kept: list[str], remarks: list[str],
+                                                            library: Library) -> None:
+    """words41: "for me" cut "find out" from its question (refused, or a LookAt of the question)."""
+    assert _aside(text, library) == (kept, remarks)
+
+
+@pytest.mark.parametrize("text", ["bring a cup for me", "look for me", "get the cup for me if you can"])
+def test_for_me_elsewhere_stays(text: str, library: Library) -> None:
+    assert _aside(text, library)[1] == []

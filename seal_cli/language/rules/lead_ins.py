@@ -28,6 +28,7 @@ from seal_cli.language.english import (
     PARTS_OF_DAY,
     PREPOSITIONS,
     PRONOUNS,
+    QUESTION_WORDS,
     RATE_WORDS,
     SEPARATOR_WORDS,
     TIME_FIRST_LEAD,
@@ -297,6 +298,22 @@ def _on_the_way(s: State, i: int) -> Match | None:
     return s.emit(i, comma + 1 - i, Tag.POLITE)
 
 
+_BEFORE_GERUND = frozenset(["before"])
+"""The subordinator whose clause of an -ing form, said before the command, is done after it ("*before going* to the
+bedroom, grab the towel"; "after V-ing", "while V-ing" are read by ``politeness.WHILE_HOLDING``, in the order said)."""
+
+
+def _subordinate_gerund(s: State, i: int) -> Match | None:
+    """"*Before* going to the bedroom, grab the towel", "before answering her question, meet her at the door": a
+    subordinator, then the -ing form of a verb of the library, opens a clause said before the command, as "before you
+    go" does: the subordinator is kept (words41: "before" was read as a manner adverb, and the clause done first)."""
+    low = s.words[i].lower
+    nxt = s.next_lower(i)
+    if low not in _BEFORE_GERUND or not nxt or gerund_lemma(nxt) in (None, nxt) or s.verb_at(i + 1) is None:
+        return None
+    return s.emit(i, 1, Tag.POLITE, low)
+
+
 def _manner(s: State, i: int) -> Match | None:
     low = s.words[i].lower
     if low.isalpha() and low not in PARTICLES and is_adverb(low) and s.verb_after(i + 1) and _not_a_verb(s, i):
@@ -385,13 +402,14 @@ def _watching(s: State, i: int) -> Match | None:
 
 def _polite_frame(s: State, i: int) -> Match | None:
     words = s.words
-    if not all(t.tag == Tag.POLITE for t in s.out) or s.verb_at(i) is not None:
-        return None
+    if not all(t.tag == Tag.POLITE for t in s.out) or s.verb_at(i) is not None or words[i].lower in QUESTION_WORDS:
+        return None                     # "what's the thinnest thing *you can* find on the shelf?": a question (words41)
     for j in range(i, min(len(words) - 2, i + 12)):  # "It would be great if you could close ..."
         if words[j].lower in (",", ";") or words[j].lower in END_MARKS:
             break
-        n = 1 if words[j + 1].lower in _YOU_MODALS else 2 if j + 2 < len(words) and \
-            (words[j + 1].lower, words[j + 2].lower) in _YOU_MODALS_TO else 0
+        n = 1 if words[j + 1].lower in _YOU_MODALS or j > i and words[j - 1].lower == "of" and \
+            words[j + 1].lower == "to" else 2 if j + 2 < len(words) and \
+            (words[j + 1].lower, words[j + 2].lower) in _YOU_MODALS_TO else 0   # "it'd be kind *of you to*" (words41)
         if words[j].lower == "you" and n and s.verb_after(j + 1 + n):
             return s.emit(i, j + 1 + n - i, Tag.POLITE)
         if j > i and words[j - 1].lower == "if" and _you_would(s, j):
@@ -511,6 +529,10 @@ def _manner_first(low: str) -> bool:
     return low.isalpha() and low not in PARTICLES and is_adverb(low)
 
 
+SUBORDINATE_GERUND = Rule("subordinator before an -ing form", _subordinate_gerund, (
+    Example("Before going to the bedroom, grab the towel", "Before", Tag.POLITE),
+    Example("before answering her question, meet her at the door", "before", Tag.POLITE),
+), _BEFORE_GERUND, "'before V-ing, ...': the subordinator of a clause said first")
 MANNER = Rule("manner adverb", _manner, (
     Example("Gently place the eggs in the bowl", "Gently", Tag.POLITE),
 ), _manner_first, "a manner adverb before the verb")
@@ -541,4 +563,5 @@ POLITE_FRAME = Rule("if you could", _polite_frame, (
     Example("it would be nice if you opened the gate", "it would be nice if you", Tag.POLITE),
     Example("I think you should follow her", "I think you should", Tag.POLITE),
     Example("I suppose you need to wash the cup", "I suppose you need to", Tag.POLITE),
+    Example("it would be kind of you to open the gate", "it would be kind of you to", Tag.POLITE),
 ), None, "a polite frame ending in 'you could' before the verb", after=frozenset([START, Tag.POLITE]))

@@ -24,6 +24,7 @@ from seal_cli.language.english import (
     WHERE_MEANS,
 )
 from seal_cli.language.morphology import (
+    gerund_lemma,
     in_verb_tables,
     is_adjective,
     is_adverb,
@@ -189,14 +190,34 @@ def _helping(s: State, i: int) -> Match | None:
 def _goal_said_first(s: State, i: int) -> bool:
     """Whether "to" at ``i`` opens a phrase of where, said first and ended by a comma before a clause ("*To the
     dining room,* follow Jane": words33), not the "to" of an infinitive ("to open the door, turn the key"); the
-    verb after it has a goal ("to the lamp, turn on the light" is none: refused as before, never the goal dropped)."""
+    verb after it has a goal ("to the lamp, turn on the light" is none: refused as before, never the goal dropped),
+    or one to whom it is done ("*to the person waving in the kitchen,* tell a joke": the person told, words41; a
+    participle inside the phrase describes its person, no verb of a clause)."""
     words = s.words
     if not s.np_starts(i + 1) or s.verb_at(i + 1) is not None:
         return False
-    for k in range(i + 2, min(len(words), i + 8)):
-        if words[k].lower == ",":
-            return s.verb_after(k + 1) and s.goal_verb_after(k + 1)
-        if words[k].lower in END_MARKS or s.verb_at(k) is not None and words[k - 1].lower not in NP_OPENERS:
+    for k in range(i + 2, min(len(words), i + _SAID_FIRST_WORDS)):
+        low = words[k].lower
+        if low == ",":
+            return s.verb_after(k + 1) and (s.goal_verb_after(k + 1) or _recipient_verb_after(s, k + 1))
+        if low in END_MARKS or s.verb_at(k) is not None and words[k - 1].lower not in NP_OPENERS and \
+                gerund_lemma(low) in (None, low):
+            return False
+    return False
+
+
+_SAID_FIRST_WORDS = 12
+"""How many words a phrase of "to" said first may have, with its comma ("to the woman wearing a red shirt in the
+kitchen,")."""
+
+
+def _recipient_verb_after(s: State, k: int) -> bool:
+    """Whether the first verb of the library after ``k`` is done to someone (a recipient: "tell", "bring")."""
+    for m in range(k, min(k + 8, len(s.words))):
+        found = s.verb_at(m)
+        if found is not None:
+            return found[0] in s.lexicon.recipients
+        if s.words[m].lower in END_MARKS:
             return False
     return False
 

@@ -22,6 +22,7 @@ from seal_cli.language.english import (
     FINITE,
     FOUND_OUT,
     HERE_WORDS,
+    INFORMATION,
     KNOW_WISHES,
     LEFT_ASKED,
     LET_KNOW,
@@ -52,6 +53,8 @@ from seal_cli.language.english import (
     STATE_PARTICLES,
     SWITCHED_MEANS,
     TIME_WORDS,
+    TOPICS,
+    TOTALS,
     WH_WORDS,
     WHERE_ASKERS,
     WHERE_BE,
@@ -113,7 +116,8 @@ def _question(s: State, i: int) -> Match | None:
     if QUESTION_MEANS not in s.lexicon.units or i + 1 >= len(words) or words[i + 1].lower in END_MARKS:
         return None
     nxt = words[i + 1].lower
-    if nxt not in ("is", "are", "'s", "was", "were") and not nxt.isalpha() or _phrase(s, i, _PSEUDO_CLEFTS):
+    if nxt not in ("is", "are", "'s", "was", "were") and not nxt.isalpha() and not nxt.isdigit() or \
+            _phrase(s, i, _PSEUDO_CLEFTS):      # "which *3* items on the table are the thinnest?" (words41)
         return None                               # "what I need is X": a wish (``WISHED_STATE``), no question
     end = _asked_again_cut(s, i, s.speech_end(i))  # the question, whatever its shape, is what to tell
     if end - i < 3 and words[end - 1].lower in ("is", "are", "'s", "was", "were"):
@@ -461,16 +465,33 @@ def _state_from(s: State, k: int, end: int) -> int | None:
         last -= 2                                 # "whether the door is locked *or not*": the state, either way
     if last < k or words[last].lower in STATE_ADVERBS:
         return None                              # "is the cup *still* on the table": an adverb, no state of its own
+    if _kinds_asked(s, k, last):
+        return k                                 # "is the person at the bed *a man or a woman*?" (words41)
     for q in _state_starts(s, k, last):
         first = _state_starts(s, k, q - 2) if q - 2 >= k and words[q - 1].lower == "or" else []
         if q < last and not first and not _participle(s, q):
             continue                              # a particle only in alternatives: "is the light *on*" as before
         for p in first or [q]:                    # "sitting (down) or": the first alternative begins the state
+            while first and p - 2 >= k and words[p - 1].lower == "," and _state_starts(s, k, p - 2):
+                p = _state_starts(s, k, p - 2)[-1]  # "standing, sitting or lying": three alternatives (words41)
             while p > k and words[p - 1].lower in STATE_ADVERBS:
                 p -= 1
             if p == k:
                 return p
     return None
+
+
+def _kinds_asked(s: State, k: int, last: int) -> bool:
+    """Whether words ``k .. last`` are two kinds joined by "or", each a noun after "a" or "an" ("*a man or a
+    woman*", "a boy or girl"), or one kind of person ("a woman"): which of them a thing or person is is asked, as
+    "male or female" asks a state (words41: the alternatives were a phrase no element took, refused)."""
+    words = s.words
+    if words[k].lower in ("a", "an") and last == k + 1:
+        return words[last].lower in s.lexicon.people      # "is the person at the door *a woman*?": one kind of person
+    if words[k].lower not in ("a", "an") or last - k not in (3, 4) or words[k + 2].lower != "or":
+        return False
+    return (last - k == 3 or words[k + 3].lower in ("a", "an")) and \
+        all(words[m].lower.isalpha() and words[m].lower not in CLOSED and s.verb_at(m) is None for m in (k + 1, last))
 
 
 def _participle(s: State, q: int) -> bool:
@@ -507,7 +528,27 @@ def _clause_stop(s: State, k: int) -> int:
     """Where a question said from ``k`` ends: the clause's end, or an "and"/"then" before it ("check if the door
     is closed *and* lock it": the next clause, whatever its verb)."""
     end = s.cond_end(k)
-    return next((j for j in range(k, end) if s.words[j].lower in ("and", "then")), end)
+    end = next((j for j in range(k, end) if s.words[j].lower in ("and", "then")), end)
+    return _listed_states_end(s, k, end)
+
+
+def _listed_states_end(s: State, k: int, end: int) -> int:
+    """Where a list of states a question asks ends when a comma at ``end`` joins a state before it to more ("is he
+    *standing, sitting or lying down*?", words41: the comma ended the clause, the rest was refused); else ``end``.
+    The list ends in "or" and a state, each state maybe with its particle."""
+    words = s.words
+    if end >= len(words) or words[end].lower != "," or end - 1 < k or not _state_starts(s, k, end - 1):
+        return end
+    j, joined = end, False
+    while j < len(words) and words[j].lower in (",", "or"):
+        joined = joined or words[j].lower == "or"
+        m = j + 1
+        if m >= len(words) or not _is_state(s, words[m].lower) or words[m].lower in STATE_ADVERBS:
+            return end
+        j = m + 1 + (m + 1 < len(words) and words[m + 1].lower in PARTICLES)
+        if joined:
+            return j if j >= len(words) or words[j].lower in END_MARKS or words[j].lower in (",", "?") else end
+    return end
 
 
 def _state_stop(s: State, k: int) -> int:
@@ -879,6 +920,83 @@ def _how_many_seen(s: State, i: int) -> Match | None:
     if verb_lemma(verb) != verb or verb in s.lexicon.things or verb in CLOSED or not in_dictionary(verb):
         return None
     return Match(3)
+
+
+def _how_many_doing(s: State, i: int) -> Match | None:
+    """"How many people in the kitchen *wear* a hat?", "how many people in the bedroom *raise* their left arm": after
+    the people or things a "how many" question counts (a plural), a verb's plain present says what they do, as "are
+    wearing" does (words41: "wear" was refused as an unknown verb, and "hold a cup" was a Pick of its own, added
+    silently). Read as an unsaid "are" and the verb's -ing form: transitive before a noun phrase, with its
+    preposition before one, bare before the end or a particle. No noun the taxonomy knows ("how many tea *spoon*
+    are ..."), no word of a closed class, and only while nothing but the counted phrase follows the question's unit."""
+    words, low = s.words, s.words[i].lower
+    if s.verb_index < 0 or not str(s.out[s.verb_index].info).endswith(_COUNTED) or s.prev_tag() != Tag.WORD or \
+            verb_lemma(low) != low or not low.isalpha() or low in CLOSED or low in s.lexicon.things or \
+            not in_dictionary(low):
+        return None
+    after = s.out[s.verb_index + 1:]
+    counted = next((w for w in after if w.tag == Tag.WORD), None)
+    if counted is None or not is_plural(counted.lower) or any(w.tag not in _COUNTED_PHRASE for w in after):
+        return None
+    nxt = s.next_lower(i)
+    if s.np_starts(i + 1) and nxt not in PARTICLES:
+        tag = Tag.VBG_T
+    elif nxt in PREPOSITIONS and s.np_starts(i + 2):
+        tag = Tag.VBG_P
+    elif nxt in END_MARKS or nxt in PARTICLES or not nxt:
+        tag = Tag.VBG_I
+    else:
+        return None
+    return Match(1, (_unsaid(words[i].start, Tag.BE, None, "are"), words[i].tagged(tag, low)))
+
+
+def _total_dropped(s: State, i: int) -> Match | None:
+    """"how many people are in the office *in total*?", "how many people *in all* are in the house", "count the
+    cups *altogether*": in a count, a word of totality (:data:`~seal_cli.language.english.TOTALS`) after the counted
+    or a place, before the end, a comma, "are"/"is" or a preposition, adds nothing: dropped (words41)."""
+    if s.verb_index < 0 or not (str(s.out[s.verb_index].info).endswith(_COUNTED) or
+                                s.out[s.verb_index].info == _COUNTING) or \
+            s.prev_tag() not in (Tag.WORD, Tag.BE, Tag.THERE, Tag.HERE, Tag.NAME):
+        return None
+    n = _phrase(s, i, TOTALS)
+    nxt = s.next_lower(i + n - 1) if n else ""
+    if not n or nxt and nxt not in END_MARKS and nxt not in (",", "are", "is", "there") and nxt not in PREPOSITIONS:
+        return None
+    return Match(n)
+
+
+def _topic_first(s: State, i: int) -> Match | None:
+    """"*As for* the cup on the table, bring it to me", "*regarding* the person at the door, greet her": a word
+    naming what the sentence is about (:data:`~seal_cli.language.english.TOPICS`), before a noun phrase, a comma
+    and a clause, is politeness: the phrase after it is said first, as a bare one is ("the cup on the table, bring
+    it to me"; words41)."""
+    words = s.words
+    n = _phrase(s, i, TOPICS)
+    if not n or any(w.tag != Tag.POLITE for w in s.out) or not s.np_starts(i + n):
+        return None
+    comma = next((k for k in range(i + n + 1, min(len(words), i + n + 12)) if words[k].lower in (",", ";", ":")
+                  or words[k].lower in END_MARKS), None)
+    if comma is None or words[comma].lower not in (",", ";", ":") or not (
+            s.verb_after(comma + 1) or _clause_at(s, comma + 1)):
+        return None
+    return s.emit(i, n, Tag.POLITE)
+
+
+def _which_of(s: State, i: int) -> Match | None:
+    """"tell me *which of* the objects on the desk is the smallest", "let me know who of the guests is standing":
+    "of" right after the question word of a question told is read as "which *one of*" is, a quantifier (words41:
+    "of" after "which" was refused)."""
+    if s.prev_tag() != Tag.WH or s.out[-1].lower not in ("which", "who") or not s.np_starts(i + 1):
+        return None
+    return Match(1, (s.words[i].tagged(Tag.NUM, 1),))
+
+
+_COUNTING = "count"
+"""Count's plain unit ("count the cups *in total*")."""
+
+
+_COUNTED_PHRASE = frozenset([Tag.WORD, Tag.DET, Tag.PREP, Tag.NUM, Tag.POSS, Tag.OF])
+"""Tags of the words of a counted phrase and the place it is in ("how many *people in the kitchen* wear ...")."""
 
 
 def _request(s: State, i: int) -> Match | None:
@@ -1501,6 +1619,9 @@ def _wish_after(s: State, head: int) -> int | None:
                 s.verb_at(k) is not None and words[k - 1].lower not in DETERMINERS and not relative:
             return None
         k += 1
+    if k < len(words) and words[k - 1].lower in PREPOSITIONS:
+        return None                                   # "I'm in *need* of a towel": a noun, no wish (words41: it was
+        #                                               Bring to "I'm" and Guide, silently)
     return k if k < len(words) and _wish_at(s, k) and k > head + 1 else None
 
 
@@ -1626,13 +1747,16 @@ def _how_much_counted(s: State, i: int) -> Match | None:
     while k < len(words) and words[k].lower.isalpha() and words[k].lower not in CLOSED and not is_plural(
             words[k].lower) and s.verb_at(k) is None:
         k += 1                                       # "how much *dirty* plates"
-    if k >= len(words) or not is_plural(words[k].lower) or words[k].lower in CLOSED:
-        return None
+    if k >= len(words) or not is_plural(words[k].lower) or words[k].lower in CLOSED or \
+            verb_lemma(words[k].lower) in _AUXILIARY_LEMMAS:
+        return None                                  # "how much *does* the box weigh?": a weight, no count (words41)
     end = words[i + 1].end
     return Match(2, (Word(s.text_of(words[i].start, end), words[i].start, end, Tag.VERB, _COUNTED),),
                  expect=False, verb=_COUNTED, using=False)
 
 
+_AUXILIARY_LEMMAS = frozenset(["do", "be", "have"])
+"""Verbs whose forms ("does", "is", "has") open the question after "how much", no noun counted."""
 _PLACE_NOUNS = frozenset(["room", "place", "part", "floor"])
 _STRANDED = frozenset(["in", "at", "on"])
 
@@ -1672,6 +1796,25 @@ def _number_of(s: State, i: int) -> Match | None:
     end = words[i + n - 1].end
     return Match(n, (Word(s.text_of(words[i].start, end), words[i].start, end, Tag.VERB, NUMBER_MEANS),),
                  expect=False, verb=NUMBER_MEANS, using=False)
+
+
+def _information_given(s: State, i: int) -> Match | None:
+    """"*Give* me the name of the person at the door", "bring us the names of the three biggest objects on the shelf":
+    a verb of giving or bringing (a unit with a recipient, no verb of saying), "me" or "us", and a piece of
+    information of something (:data:`~seal_cli.language.english.INFORMATION`, then "of") is telling it (words41: a
+    Bring of "the name", silently). The verb is read as "tell"; what follows is what "tell me ..." takes."""
+    words = s.words
+    if i + 4 >= len(words) or words[i + 1].lower not in ("me", "us") or words[i + 2].lower not in _INFO_DETERMINERS \
+            or words[i + 3].lower not in INFORMATION or words[i + 4].lower != "of" or QUESTION_MEANS not in \
+            s.lexicon.units:
+        return None
+    found = s.verb_at(i)
+    if found is None or found[1] != 1 or found[0] not in s.lexicon.recipients or found[0] in s.lexicon.speech:
+        return None
+    return Match(1, (words[i].tagged(Tag.VERB, QUESTION_MEANS),), expect=False, verb=QUESTION_MEANS, using=False)
+
+
+_INFO_DETERMINERS = frozenset(["the", "their", "his", "her", "its"])
 
 
 def _let_know(s: State, i: int) -> Match | None:
@@ -1992,6 +2135,27 @@ HOW_MANY_SEEN = Rule("how many X can you see", _how_many_seen, (
     Example("How many dishes can you see on the dining table?", "can", ""),
     Example("how many cups do you find in the kitchen", "do", ""),
 ), _SEEN_AUXILIARIES, "'how many X can you see': who counts, dropped (the things are X)")
+TOPIC_FIRST = Rule("what the sentence is about, first", _topic_first, (
+    Example("As for the cup on the table, bring it to me", "As for", Tag.POLITE),
+    Example("regarding the person at the door, greet her", "regarding", Tag.POLITE),
+), first_words(TOPICS), "'as for X, ...', 'regarding X, ...': politeness; X is said first",
+    after=frozenset([START, Tag.POLITE]))
+WHICH_OF = Rule("which of, told", _which_of, (
+    Example("tell me which of the objects on the desk is the smallest", "of", Tag.NUM),
+    Example("let me know who of the guests is standing", "of", Tag.NUM),
+), frozenset(["of"]), "'which of the X' in a question told: 'which one of the X'", after=frozenset([Tag.WH]))
+TOTAL_DROPPED = Rule("in total, of a count", _total_dropped, (
+    Example("how many people are in the office in total?", "in total", ""),
+    Example("how many people in all are in the house", "in all", ""),
+    Example("how many people are there total in the office", "total", ""),
+), first_words(TOTALS), "'in total', 'altogether' in a count: dropped (a count counts all)",
+    after=frozenset([Tag.WORD, Tag.BE, Tag.THERE, Tag.HERE, Tag.NAME]))
+HOW_MANY_DOING = Rule("how many X do", _how_many_doing, (
+    Example("How many people in the kitchen wear a hat?", "wear", Tag.VBG_T),
+    Example("how many people in the bedroom raise their left arm", "raise", Tag.VBG_T),
+    Example("how many people in the office point to the left", "point", Tag.VBG_P),
+    Example("how many men in the hall sit?", "sit", Tag.VBG_I),
+), None, "'how many X V': what the counted do, read as 'are V-ing'", after=frozenset([Tag.WORD]))
 HOW_MANY_SAID = Rule("how many, said", _how_many_said, (
     Example("tell Anna how many cups are left", "how many cups are left", Tag.SAID),
 ), frozenset(["how"]), "'how many ...' after a verb of saying and the person told: what is said")
@@ -2044,6 +2208,10 @@ WHICH_PLACE = Rule("which room is X in", _which_place, (
 STRANDED_WHERE = Rule("the preposition left at the end of which room", _stranded_where, (
     Example("which room is grandpa in?", "in", ""),
 ), _STRANDED, "the 'in' of 'which room is X in?': dropped")
+INFORMATION_GIVEN = Rule("give me the name of", _information_given, (
+    Example("give me the name of the person at the door", "give", Tag.VERB),
+    Example("Bring me the names of the three biggest objects on the shelf", "Bring", Tag.VERB),
+), None, "'give me the name of X': tell me the name of X", after=frozenset([START, Tag.POLITE, Tag.SEP]))
 NUMBER_OF_RULE = Rule("the number of", _number_of, (
     Example("Tell me the total number of snacks on the desk.", "Tell me the total number of", Tag.VERB),
     Example("What number of people in the bedroom wear white jackets?", "What number of", Tag.VERB),
@@ -2102,7 +2270,8 @@ def _fronted_question(s: State, i: int) -> Match | None:
     """A phrase said before a question ("*On the table,* which object is lightest?"): the phrase is part
     of what to tell."""
     words = s.words
-    if QUESTION_MEANS not in s.lexicon.units or not match_phrase(words, i, PREPOSITIONS) and words[i].lower != "of":
+    if QUESTION_MEANS not in s.lexicon.units or not match_phrase(words, i, PREPOSITIONS) and words[i].lower != "of" \
+            and not match_phrase(words, i, TOPICS):   # "*regarding* the jars on the shelf, which is the oldest?"
         return None
     k = i + 1
     while k < len(words) and words[k].lower not in END_MARKS and words[k].lower not in (",", ";") and \
@@ -2116,8 +2285,13 @@ def _fronted_question(s: State, i: int) -> Match | None:
                  expect=False, verb=QUESTION_MEANS, using=False)
 
 
-_TAKEN_UP = frozenset(["it", "they", "them", "he", "she", "him", "her", "that", "this", "those", "these", "one"])
-"""Pronouns with which a question takes up the phrase said before it ("the heaviest jar, what is *it*?")."""
+_TAKEN_UP = frozenset(["it", "they", "them", "he", "she", "him", "her", "that", "this", "those", "these", "one",
+                       "its", "their", "his"])
+"""Pronouns with which a question takes up the phrase said before it ("the heaviest jar, what is *it*?"; a
+possessive too, "the man at the door, what's *his* name?": words41)."""
+_PHRASE_BREAKS = frozenset([",", ";", ":"])
+"""What ends a phrase said first before the question that takes it up: a comma, a dash (read as ";") or a colon
+("the person by the shelf *-* what are they wearing?", words41)."""
 
 
 def _phrase_said_first(s: State, i: int) -> int | None:
@@ -2126,7 +2300,7 @@ def _phrase_said_first(s: State, i: int) -> int | None:
     the library in its base form stands in it ("the cup, bring it": a command takes it up, ``DISLOCATED``)."""
     words = s.words
     k = i + 1
-    while k < len(words) and words[k].lower not in END_MARKS and words[k].lower not in (",", ";"):
+    while k < len(words) and words[k].lower not in END_MARKS and words[k].lower not in _PHRASE_BREAKS:
         if s.verb_at(k) is not None and verb_lemma(words[k].lower) == words[k].lower and \
                 words[k - 1].lower not in NP_OPENERS:
             return None
@@ -2143,7 +2317,8 @@ def _phrase_asked(s: State, i: int) -> Match | None:
             words[i].lower not in NP_OPENERS:
         return None
     k = _phrase_said_first(s, i)
-    if k is None or k + 2 >= len(words) or words[k].lower != "," or words[k + 1].lower not in QUESTION_WORDS or \
+    if k is None or k + 2 >= len(words) or words[k].lower not in _PHRASE_BREAKS or \
+            words[k + 1].lower not in QUESTION_WORDS or \
             not _asked_to_the_end(s, k + 1) or _question(s, k + 1) is None:
         return None
     end = s.speech_end(k + 1)
@@ -2207,7 +2382,9 @@ def _count_tail_dropped(s: State, i: int) -> Match | None:
 def _asked_to_the_end(s: State, k: int) -> bool:
     """Whether a question that starts at ``k`` is all the rest of its sentence and asks ("in the hall *which person
     is standing?*"): a question mark ends it, and no verb of the library in its base form is said in it (a command
-    the question word only opened a relative clause before: "in the box which is red put the cup")."""
+    the question word only opened a relative clause before: "in the box which is red put the cup"). Crowd workers
+    often leave the mark out or write a stop ("on the shelf what is the biggest object", words41): the command's
+    end does as well, when nothing follows it."""
     words = s.words
     m = k + 1
     while m < len(words) and words[m].lower not in END_MARKS:
@@ -2215,7 +2392,7 @@ def _asked_to_the_end(s: State, k: int) -> bool:
         if low in (",", ";") or s.verb_at(m) is not None and verb_lemma(low) == low:
             return False
         m += 1
-    return m < len(words) and words[m].lower == "?"
+    return m >= len(words) or words[m].lower == "?" or m == len(words) - 1
 
 
 _FRONTED_FIRST = frozenset([*LOCATIVE, "from", "to", "into", "onto", "out of", "off"])
@@ -2279,7 +2456,9 @@ FRONTED_OF = Rule("of-phrase first", _fronted_of, (
 FRONTED_QUESTION = Rule("phrase said before a question", _fronted_question, (
     Example("On the table, which object is lightest?", "On the table, which object is lightest", Tag.SAID),
     Example("in the garage which car is the oldest?", "in the garage which car is the oldest", Tag.SAID),
-), first_words(PREPOSITIONS) | {"of"},
+    Example("Regarding the jars on the shelf, which is the oldest?", "Regarding the jars on the shelf, which is the "
+            "oldest", Tag.SAID),
+), first_words(PREPOSITIONS) | {"of"} | first_words(TOPICS),
     "a phrase and a comma before a question: all of it is what to tell")
 PHRASE_ASKED = Rule("phrase said before a question that takes it up", _phrase_asked, (
     Example("The heaviest jar on the shelf, what is it?", "The heaviest jar on the shelf, what is it", Tag.SAID),
