@@ -75,6 +75,24 @@ THERE = frozenset({"there", "over there", "in there", "yonder"})
 HELD_PRONOUNS = frozenset({"it", "this", "that"})
 """Pronouns that, with nothing before them in the command, call what the robot holds."""
 
+PLURAL_PRONOUNS = frozenset({"them", "these", "those"})
+"""Pronouns that call what the robot holds, or what a done command handled last, when it is one thing said as a
+plural: a pair ("the gloves") or a noun with a plural form only ("the scissors") (:func:`said_as_plural`)."""
+
+
+def said_as_plural(name: str) -> bool:
+    """Whether one thing of a class (or an instance's name, ``gloves_1``) is called "them": its last word names a
+    pair in the plural (:data:`~seal_cli.planning.grounding.PAIRED`: "gloves", "goggles"; not "glass", a drinking glass, nor
+    "glove") or has a plural form only ("scissors",
+    "pliers"). "hang them on the coat rack", holding the gloves, was refused: nothing before "them" fit (e2e31)."""
+    from seal_cli.language.morphology import noun_lemma, plural_only
+
+    words = [w for w in class_words(name) if not w.isdigit()]
+    if not words:
+        return False
+    word = words[-1]        # a class named by the plural of a pair ("gloves", "glasses"; not a drinking "glass")
+    return (word != noun_lemma(word) and noun_lemma(word) in PAIRED) or plural_only(word)
+
 
 def instance_names(cls: str, n: int) -> tuple[str, ...]:
     """The names of ``n`` things of a class when nothing else is named: ``apple``, ``apple_2``, …"""
@@ -461,9 +479,10 @@ def _values(phrase: Phrase, earlier: Sequence[Mapping[str, tuple[str, ...]]], th
     if word in INDEFINITE and things.map is not None and category not in ("message", "question"):
         raise _located(_unnamed_kind(phrase, things.map), phrase, text)
     if word in PRONOUNS and word not in PERSON_PRONOUNS and word not in INDEFINITE:
-        if things.handled_before and word in HELD_PRONOUNS:     # what the commands done acted on last
+        if things.handled_before and (word in HELD_PRONOUNS or (word in PLURAL_PRONOUNS and said_as_plural(
+                things.handled_before[-1]))):   # what the commands done acted on last ("them": the gloves)
             return (things.handled_before[-1],)
-        if things.held and word in HELD_PRONOUNS:
+        if things.held and (word in HELD_PRONOUNS or (word in PLURAL_PRONOUNS and said_as_plural(things.held))):
             return (things.name(things.held),)
         raise _located(f"cannot tell what {phrase.text!r} refers to: nothing before it in the command fits"
                        f"{', nor does a command done before it (--done)' if things.done_said else ''}", phrase, text)
