@@ -201,7 +201,7 @@ def run_on_map(m: Map, text: str, library: Library, policy: Policy, *, rng: np.r
                   sweeper=lambda: make_policy("coverage"), questions=questions,
                   clock=clock, search_end=search_end, put_away=kept, put_back=problem.put_back,
                   heed_sources=True, names=problem.names, absent_said=True, among=problem.among,
-                  one_away=problem.one_away)
+                  one_away=problem.one_away, nearest=problem.nearest)
     executed = [b for p in parses[:-1] for b in build_problem(p, library, map=known_map).commanded]
     warnings = [*problem.warnings, *(unchecked_conditions(parses[-1]) if check is None else [])]
     for warning in warnings:

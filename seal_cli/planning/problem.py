@@ -127,6 +127,12 @@ class Problem:
     """The commanded frames that put a thing "back" on or in a place they name ("put the book back on the bookshelf"):
     the thing is one on or in no place of the goal's class (:func:`the_ones_not_there`; ``seal run``'s robot asks it
     of what it sees, :meth:`seal_cli.sim.agent.Agent.already_so`)."""
+    nearest: Mapping[Binding, tuple[str, ...]] = field(default_factory=dict)
+    """The commanded frames that carry a thing to the nearest of several places of a class the command did not tell
+    apart, nearest from where the robot takes it, with those places: ``seal run`` plans before it knows where the thing
+    lies (it guessed where one most likely lies), so it chooses again from where it took it, as ``seal plan`` chose
+    (e2e31: "put the brush in the sink" planned the finishing room's sink beside the brush's table; the run washed it in
+    the kitchen's, nearer the showroom's table it guessed)."""
 
 
 class Things:
@@ -1485,7 +1491,20 @@ def build_problem(parse: Parse, library: Library, *, holding: str | None = None,
                    tuple(b for b in things.put_away if b in commanded),
                    tuple(b for b in things.put_back if b in commanded), dict(things.called),
                    {b: places for b, places in among.items() if b in commanded},
-                   one_away=tuple(b for b in things.one_away if b in commanded))
+                   one_away=tuple(b for b in things.one_away if b in commanded),
+                   nearest=_nearest_from_the_thing(commanded, things))
+
+
+def _nearest_from_the_thing(commanded: Sequence[Binding], things: Things) -> dict[Binding, tuple[str, ...]]:
+    """The frames whose goal is the nearest of several places from where the robot takes the thing it carries there
+    (:attr:`Problem.nearest`), with those places: not one put away or back (chosen again by their own rules)."""
+    names = things.names
+    if names is None:
+        return {}
+    own = {*things.put_away, *things.put_back, *things.one_away}
+    return {b: names.nearest_of[goal] for b in commanded
+            if (goal := b.elements.get("goal")) in names.nearest_of and b not in own and b.elements.get("theme")
+            and any("theme" in a.args and "goal" in a.args for a in b.frame.actions)}
 
 
 def carry_out_done(done: Iterable[Parse], library: Library, things: Things) -> None:

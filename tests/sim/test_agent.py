@@ -886,3 +886,22 @@ def test_a_thing_taken_to_the_speakers_room_is_put_down_by_the_speaker(library: 
                                         SeFMPolicy(particles=50), rng=np.random.default_rng(0))
     assert result.completed, result.reason
     assert agent.world.items["laptop_1"].parent == "counter_1"
+
+
+def test_the_nearest_of_several_goals_is_chosen_again_from_where_the_thing_lay(library: Library) -> None:
+    """e2e31: "put the brush in the sink" on the workshop (a sink in the finishing room beside the brush's table, one
+    in the kitchen): ``seal plan`` chose the finishing room's, nearest the brush; the run, planning before it knew where
+    the brush lay, chose the kitchen's (nearest the showroom's table, where a brush most likely lies) and kept it once
+    it held the brush. It now chooses again from where it took the thing, as the plan does."""
+    from seal_cli import pipeline
+    from seal_cli.maps.formats.map_server import load_map
+
+    m = load_map("workshop")
+    assert [str(s) for s in pipeline.plan("put the brush in the sink", library, map=m).steps][-1] == \
+        "Place(theme=brush, goal=sink_1)"
+    agent, result = pipeline.run_on_map(m, "put the brush in the sink", library, SeFMPolicy(particles=50),
+                                        rng=np.random.default_rng(0))
+    assert result.completed, result.reason
+    assert agent.world.items["brush_1"].parent == "sink_1"
+    assert any(r.text.startswith("brush_1 lay on table_2: takes it to sink_1, the nearest from there") for r in
+               agent.records)
