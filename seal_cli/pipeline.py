@@ -202,14 +202,14 @@ def run_on_map(m: Map, text: str, library: Library, policy: Policy, *, rng: np.r
                   clock=clock, search_end=search_end, put_away=kept, put_back=problem.put_back,
                   heed_sources=True, names=problem.names, absent_said=True, among=problem.among,
                   one_away=problem.one_away, nearest=problem.nearest)
-    executed = [b for p in parses[:-1] for b in build_problem(p, library, map=known_map).commanded]
+    executed = list(problem.done)     # grounded in order, each after the ones before it ("put it on the table")
     warnings = [*problem.warnings, *(unchecked_conditions(parses[-1]) if check is None else [])]
     for warning in warnings:
         agent.say("warn", f"warning: {warning}")
     notes = inferred_steps(parses[-1])
     for note in notes:
         agent.say("warn", note)
-    for note in unseen_there(problem.commanded, m, problem.state.class_of):     # why it may search first (e2e28)
+    for note in unseen_there(problem.commanded, m, problem.state.class_of, known_map):     # why it may search first (e2e28)
         agent.say("plan", note)
     if check is not None and condition is not None:
         agent.say("plan", f"checks first whether {condition.said.split(None, 1)[1]}: {condition.question}")

@@ -127,6 +127,10 @@ class Problem:
     """The commanded frames that put a thing "back" on or in a place they name ("put the book back on the bookshelf"):
     the thing is one on or in no place of the goal's class (:func:`the_ones_not_there`; ``seal run``'s robot asks it
     of what it sees, :meth:`seal_cli.sim.agent.Agent.already_so`)."""
+    done: tuple[Binding, ...] = ()
+    """The frames of the commands already done (``--done``), in order, each grounded after the ones before it ("pick
+    up the cup", then "put it on the table": the cup): ``seal run`` starts from their postconditions (e2e31: it
+    grounded each alone, and refused "it")."""
     nearest: Mapping[Binding, tuple[str, ...]] = field(default_factory=dict)
     """The commanded frames that carry a thing to the nearest of several places of a class the command did not tell
     apart, nearest from where the robot takes it, with those places: ``seal run`` plans before it knows where the thing
@@ -1475,7 +1479,7 @@ def build_problem(parse: Parse, library: Library, *, holding: str | None = None,
         for element in frame.elements:
             if element.default is not None:
                 things.name(element.default)
-    carry_out_done(done, library, things)
+    done_frames = carry_out_done(done, library, things)
     commanded = commanded_frames(parse, library, things)
     _the_ones_said_where(commanded, things)
     the_ones_not_there(commanded, things)
@@ -1492,7 +1496,7 @@ def build_problem(parse: Parse, library: Library, *, holding: str | None = None,
                    tuple(b for b in things.put_back if b in commanded), dict(things.called),
                    {b: places for b, places in among.items() if b in commanded},
                    one_away=tuple(b for b in things.one_away if b in commanded),
-                   nearest=_nearest_from_the_thing(commanded, things))
+                   nearest=_nearest_from_the_thing(commanded, things), done=tuple(done_frames))
 
 
 def _nearest_from_the_thing(commanded: Sequence[Binding], things: Things) -> dict[Binding, tuple[str, ...]]:
@@ -1507,16 +1511,20 @@ def _nearest_from_the_thing(commanded: Sequence[Binding], things: Things) -> dic
             and any("theme" in a.args and "goal" in a.args for a in b.frame.actions)}
 
 
-def carry_out_done(done: Iterable[Parse], library: Library, things: Things) -> None:
+def carry_out_done(done: Iterable[Parse], library: Library, things: Things) -> list[Binding]:
     """The commands already done (``--done``), in order, grounded and carried out on ``things``: each is context for
     the ones after it ("find Ben" → "him", "pick up the cup" → "it") and leaves the world as it left it (what the
-    next one, and the command, are grounded on: the book put on the table is fetched from the table)."""
+    next one, and the command, are grounded on: the book put on the table is fetched from the table). Their frames,
+    in order (:attr:`Problem.done`)."""
+    frames: list[Binding] = []
     for earlier in done:
         bindings = commanded_frames(earlier, library, things)
+        frames.extend(bindings)
         things.carry_out(earlier.text, bindings)
         things.named_before = [*things.named_before, *_people_named(bindings, things)]
         things.handled_before = [*things.handled_before, *_handled(bindings, things)]
         things.done_said = True
+    return frames
 
 
 def moved_by(binding: Binding) -> tuple[str, ...]:
