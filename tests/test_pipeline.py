@@ -161,3 +161,20 @@ def test_a_done_command_s_pronoun_is_grounded_after_the_done_commands_before_it_
                                         rng=np.random.default_rng(0), done=done)
     assert result.completed, result.reason
     assert any(r.text == "handed cup_1 to me" for r in agent.records)
+
+
+def test_the_things_done_commands_moved_are_known_where_they_were_left(library: Library) -> None:
+    """e2e31: after `--done 'take the catalogue to Anna'` on the workshop, "where is the catalogue?" searched the
+    showroom, the workshop, the finishing room and the kitchen by the prior (a counter, a table) and said none was
+    found: the robot itself left it with Anna, in the office; it knows so, and goes there."""
+    from seal_cli.maps.formats.map_server import load_map
+    from seal_cli.sim.policies.sefm import SeFMPolicy
+
+    m = load_map("workshop")
+    world, _ = pipeline._after_done(m, [pipeline.parse_to_plan("take the catalogue to Anna", library)], library,
+                                    None, m.known())
+    assert pipeline.left_by_done(m, world) == ["catalogue_1"] and pipeline.left_by_done(m, m) == []
+    agent, result = pipeline.run_on_map(m, "where is the catalogue?", library, SeFMPolicy(particles=50),
+                                        rng=np.random.default_rng(0), done=["take the catalogue to Anna"])
+    assert result.completed, result.reason
+    assert "office" in (result.answer or "") and result.path_m < 10.0

@@ -291,6 +291,13 @@ class Agent:
             if not item.movable or oracle:
                 self.known[item.id] = self._known(item)
 
+    def remember(self, ids: Iterable[str]) -> None:
+        """Know where these things of the world lie as the run starts, as though seen: the ones the commands already
+        done moved (``seal run --done``), where the robot itself left them."""
+        for i in ids:
+            if i in self.world.items:
+                self.known[i] = self._known(self.world.items[i])
+
     def _known(self, item: Item) -> Known:
         parent = item.parent if item.parent in self.world.items and not self.world.items[item.parent].movable else None
         return Known(item.id, item.key, item.at, item.movable, item.openable, item.receptacle, item.access, parent)
