@@ -167,7 +167,6 @@ def test_the_things_done_commands_moved_are_known_where_they_were_left(library: 
     """e2e31: after `--done 'take the catalogue to Anna'` on the workshop, "where is the catalogue?" searched the
     showroom, the workshop, the finishing room and the kitchen by the prior (a counter, a table) and said none was
     found: the robot itself left it with Anna, in the office; it knows so, and goes there."""
-    from seal_cli.maps.formats.map_server import load_map
     from seal_cli.sim.policies.sefm import SeFMPolicy
 
     m = load_map("workshop")
