@@ -211,7 +211,7 @@ def run_on_map(m: Map, text: str, library: Library, policy: Policy, *, rng: np.r
     notes = inferred_steps(parses[-1])
     for note in notes:
         agent.say("warn", note)
-    for note in unseen_there(problem.commanded, m, problem.state.class_of, known_map):     # why it may search first (e2e28)
+    for note in unseen_there(problem.commanded, m, problem.state.class_of, known_map):   # why it may search (e2e28)
         agent.say("plan", note)
     if check is not None and condition is not None:
         agent.say("plan", f"checks first whether {condition.said.split(None, 1)[1]}: {condition.question}")

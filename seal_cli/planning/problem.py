@@ -82,9 +82,9 @@ plural: a pair ("the gloves") or a noun with a plural form only ("the scissors")
 
 def said_as_plural(name: str) -> bool:
     """Whether one thing of a class (or an instance's name, ``gloves_1``) is called "them": its last word names a
-    pair in the plural (:data:`~seal_cli.planning.grounding.PAIRED`: "gloves", "goggles"; not "glass", a drinking glass, nor
-    "glove") or has a plural form only ("scissors",
-    "pliers"). "hang them on the coat rack", holding the gloves, was refused: nothing before "them" fit (e2e31)."""
+    pair in the plural (:data:`~seal_cli.planning.grounding.PAIRED`: "gloves", "goggles"; not "glass", a drinking
+    glass, nor "glove") or has a plural form only ("scissors", "pliers"). "hang them on the coat rack", holding the
+    gloves, was refused: nothing before "them" fit (e2e31)."""
     from seal_cli.language.morphology import noun_lemma, plural_only
 
     words = [w for w in class_words(name) if not w.isdigit()]

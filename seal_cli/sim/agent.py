@@ -570,7 +570,8 @@ class Agent:
         if held.key != self.class_of(todo[0].elements.get("theme", "")) or len(among) < 2:
             return None
         lay = self.picked_from.get(held.id)
-        at = self.world.items[lay].at if lay in self.world.items else self.started.get(held.id, self.world.robot.pose[:2])
+        at = self.world.items[lay].at if lay in self.world.items else \
+            self.started.get(held.id, self.world.robot.pose[:2])
         lengths = drive_lengths(self.scene.map, at, list(among))
         best = min(range(len(among)), key=lambda k: (lengths[k], k))
         goal = todo[0].elements.get("goal")

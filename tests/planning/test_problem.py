@@ -1013,9 +1013,9 @@ def test_them_calls_a_held_pair_or_a_plural_only_thing(library: Library) -> None
     """e2e31: "hang them on the coat rack", holding the gloves on the workshop, was refused (nothing before "them"
     fit): one pair ("the gloves", "the goggles") or a plural-only thing ("the scissors") is called "them", held or
     handled last by a done command; a hammer is still "it", not "them"."""
+    from seal_cli.errors import SealError
     from seal_cli.maps.formats.map_server import load_map
     from seal_cli.pipeline import plan
-    from seal_cli.errors import SealError
     from seal_cli.planning.problem import said_as_plural
 
     m = load_map(Path(__file__).resolve().parents[2] / "maps" / "workshop.yaml")
