@@ -5,7 +5,8 @@
 ``student_house.yaml``, e2e24's held-out student house, and ``guesthouse.yaml``, e2e25's held-out bed and
 breakfast, and ``studio.yaml``, e2e26's held-out open-plan studio flat, and ``corner_shop.yaml``, e2e27's held-out
 corner shop with its back rooms, and ``houseboat.yaml``, e2e28's held-out wide-beam houseboat, and ``library.yaml``, e2e29's held-out
-branch library, and ``bakery.yaml``, e2e30's held-out bakery with its bakehouse and back rooms (run once; the PGMs are committed next to this script).
+branch library, and ``bakery.yaml``, e2e30's held-out bakery with its bakehouse and back rooms, and ``workshop.yaml``, e2e31's held-out
+joinery workshop with its showroom, finishing room and back rooms (run once; the PGMs are committed next to this script).
 
     python maps/make_houses.py          # rewrites maps/<house>.pgm for each of HOUSES
 
@@ -324,8 +325,24 @@ BAKERY = House(
     ),
 )
 
+WORKSHOP = House(
+    "workshop", (0.0, 0.0, 16.0, 10.0),
+    walls=(
+        ((5.0, 0.0, 5.0, 10.0), ((2.0, 3.0),)),                 # showroom | workshop (the only door off the showroom)
+        ((0.0, 5.0, 5.0, 5.0), ((3.5, 4.5),)),                  # showroom | office
+        ((12.0, 0.0, 12.0, 6.0), ((2.0, 3.5),)),                # workshop | finishing room (a wide door)
+        ((5.0, 6.0, 16.0, 6.0), ((7.0, 8.0), (11.0, 12.0), (14.0, 15.0))),  # the back rooms' doors
+        ((10.0, 6.0, 10.0, 10.0), ()),                          # kitchen | storeroom
+        ((13.0, 6.0, 13.0, 10.0), ()),                          # storeroom | toilet
+    ),
+    blocks=(
+        (8.0, 3.3, 9.2, 4.3),      # the table saw in the middle of the workshop floor
+        (5.1, 0.1, 6.2, 0.5),      # the timber rack along the workshop's south wall
+    ),
+)
+
 HOUSES = (COTTAGE, OFFICE_FLOOR, CAFE, CLINIC, FARMHOUSE, TERRACE, BUNGALOW, LODGE, FLAT, CAREHOME, STUDENT_HOUSE,
-          GUESTHOUSE, STUDIO, CORNER_SHOP, HOUSEBOAT, LIBRARY, BAKERY)
+          GUESTHOUSE, STUDIO, CORNER_SHOP, HOUSEBOAT, LIBRARY, BAKERY, WORKSHOP)
 
 
 def draw(house: House) -> np.ndarray:

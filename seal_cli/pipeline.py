@@ -186,6 +186,7 @@ def run_on_map(m: Map, text: str, library: Library, policy: Policy, *, rng: np.r
     known_map = m.known()     # once: a map checks itself when made (0.1 s), and --done may hold 1,000 commands
     with naming_done(done, text):
         parses = [parse_to_plan(t, library, vocabulary) for t in (*done, text)]
+        drawn = m
         if done:                # the house as the done commands left it; the robot knows what it handled (e2e30)
             m, known_map = _after_done(m, parses[:-1], library, holding, known_map)
         problem = build_problem(parses[-1], library, holding=holding, done=parses[:-1], map=known_map,
@@ -201,15 +202,16 @@ def run_on_map(m: Map, text: str, library: Library, policy: Policy, *, rng: np.r
                   sweeper=lambda: make_policy("coverage"), questions=questions,
                   clock=clock, search_end=search_end, put_away=kept, put_back=problem.put_back,
                   heed_sources=True, names=problem.names, absent_said=True, among=problem.among,
-                  one_away=problem.one_away)
-    executed = [b for p in parses[:-1] for b in build_problem(p, library, map=known_map).commanded]
+                  one_away=problem.one_away, nearest=problem.nearest)
+    executed = list(problem.done)     # grounded in order, each after the ones before it ("put it on the table")
+    agent.remember(left_by_done(drawn, m))     # it moved them itself: it knows where it left them (e2e31)
     warnings = [*problem.warnings, *(unchecked_conditions(parses[-1]) if check is None else [])]
     for warning in warnings:
         agent.say("warn", f"warning: {warning}")
     notes = inferred_steps(parses[-1])
     for note in notes:
         agent.say("warn", note)
-    for note in unseen_there(problem.commanded, m, problem.state.class_of):     # why it may search first (e2e28)
+    for note in unseen_there(problem.commanded, m, problem.state.class_of, known_map):   # why it may search (e2e28)
         agent.say("plan", note)
     if check is not None and condition is not None:
         agent.say("plan", f"checks first whether {condition.said.split(None, 1)[1]}: {condition.question}")
@@ -250,6 +252,20 @@ def _after_done(m: Map, done: Sequence[Parse], library: Library, holding: str | 
     carry_out_done(done, library, things)
     remembered = handled(m, things)
     return world_after(m, things), replace(known, objects=remembered) if remembered else known
+
+
+def left_by_done(drawn: Map, after: Map) -> list[str]:
+    """The world's ids (as :func:`~seal_cli.sim.agent.scene_from_map` names them) of the objects the done commands
+    left somewhere other than where the map drew them: the robot moved them, so it knows where they lie (e2e31: after
+    `--done 'take the catalogue to Anna'`, "where is the catalogue?" searched the showroom, workshop, finishing room
+    and kitchen by the prior and said none was found; the catalogue was with Anna in the office)."""
+    counts: dict[str, int] = {}
+    ids = []
+    for o in after.objects:
+        counts[o.cls] = counts.get(o.cls, 0) + 1
+        if o not in drawn.objects:
+            ids.append(f"{o.cls}_{counts[o.cls]}")
+    return ids
 
 
 def _every_seen(agent: Any, parse: Parse, library: Library, vocabulary: Any,

@@ -147,3 +147,33 @@ def test_run_on_map_says_the_source_a_thing_was_taken_from_when_not_the_one_said
     assert any("no book in the study room, where the command said it was; looks elsewhere" in t for t in texts)
     done = [t for t in texts if t.startswith("done: ")]
     assert done and all("study_room" not in t for t in done) and "source=table_2" in done[0]
+
+
+def test_a_done_command_s_pronoun_is_grounded_after_the_done_commands_before_it_in_the_run(library: Library,
+                                                                                              apartment: Map) -> None:
+    """e2e31: `seal run --done 'pick up the cup' --done 'put it on the table' 'bring it to me'` was refused ("cannot
+    tell what 'it' refers to", column 5 of the second done command): the run grounded each done command alone, where
+    the plan grounds each after the ones before it. Both now read "it" as the cup."""
+    done = ["pick up the cup", "put it on the table"]
+    assert [str(s) for s in pipeline.plan("bring it to me", library, map=apartment, done=done).steps] == [
+        "Pick(theme=cup, source=dining_table_1)", "Bring(theme=cup, recipient=me)"]
+    agent, result = pipeline.run_on_map(apartment, "bring it to me", library, make_policy("oracle"),
+                                        rng=np.random.default_rng(0), done=done)
+    assert result.completed, result.reason
+    assert any(r.text == "handed cup_1 to me" for r in agent.records)
+
+
+def test_the_things_done_commands_moved_are_known_where_they_were_left(library: Library) -> None:
+    """e2e31: after `--done 'take the catalogue to Anna'` on the workshop, "where is the catalogue?" searched the
+    showroom, the workshop, the finishing room and the kitchen by the prior (a counter, a table) and said none was
+    found: the robot itself left it with Anna, in the office; it knows so, and goes there."""
+    from seal_cli.sim.policies.sefm import SeFMPolicy
+
+    m = load_map("workshop")
+    world, _ = pipeline._after_done(m, [pipeline.parse_to_plan("take the catalogue to Anna", library)], library,
+                                    None, m.known())
+    assert pipeline.left_by_done(m, world) == ["catalogue_1"] and pipeline.left_by_done(m, m) == []
+    agent, result = pipeline.run_on_map(m, "where is the catalogue?", library, SeFMPolicy(particles=50),
+                                        rng=np.random.default_rng(0), done=["take the catalogue to Anna"])
+    assert result.completed, result.reason
+    assert "office" in (result.answer or "") and result.path_m < 10.0

@@ -160,6 +160,9 @@ class MapNames:
         self.taxonomy = taxonomy
         self.chosen: dict[str, str] = {}
         """Each place chosen among several a phrase did not tell apart, by id: which they were and why this one."""
+        self.nearest_of: dict[str, tuple[str, ...]] = {}
+        """Each place of :attr:`chosen` chosen as the nearest by drive from where the robot will be, by id: the places
+        it was chosen among (``seal run`` chooses again from where it takes the thing, :meth:`_nearest`)."""
         self._house = map.name.replace("_", " ")
         """The map's name as words, in messages ("the office floor has no kitchen")."""
         self.room_said: str | None = None
@@ -371,6 +374,7 @@ class MapNames:
             return one
         self.chosen.setdefault(one.id, f"{said} {one.id},{which} the nearest the robot drives to from {there} "
                                f"({lengths[best]:.1f} m); say its room or its number ('{one.id}') to choose")
+        self.nearest_of.setdefault(one.id, tuple(r.id for r in among))
         return one
 
     def _room_of_words(self, words: tuple[str, ...]) -> str | None:

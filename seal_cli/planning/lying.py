@@ -64,15 +64,19 @@ def goal_among(binding: Binding, thing: str, kind: str, *, held: str | None, amo
     return next((p for p in order if lying[p] is not None), None)
 
 
-def unseen_there(commanded: Sequence[Binding], m: Map, class_of: Callable[[str], str]) -> list[str]:
+def unseen_there(commanded: Sequence[Binding], m: Map, class_of: Callable[[str], str],
+                 known: Map | None = None) -> list[str]:
     """What ``seal run``'s robot says before it drives, for each frame that would put a thing on or in the map's one
     place of its class where the map's prior expects such a thing: it cannot know before it looks whether one lies
     there already (it knows no thing until it sees it; the map's objects are the world it finds, which ``seal plan``
     reads), and if one does, the other-one rule sends it to look for another where the prior keeps such things before
     it can say the frame needs no doing (e2e28: "put the remote on the sofa" on the studio searched 21 m, silent on
-    why)."""
+    why). Nothing is said of a kind the robot knows a thing of (``known``: what it knows of the map, with the things the
+    done commands handled, ``seal run --done``): it knows where that one lies (e2e31: "put it back" after `--done
+    'bring the cup to the table'` said "it knows no cup until it sees one")."""
     from seal_cli.planning.keeping import Spot, mass, prior_of
 
+    knows = {class_key(o.cls) for o in known.objects} if known is not None else set()
     said = []
     several = several_said(commanded, class_of)
     for binding in commanded:
@@ -83,6 +87,8 @@ def unseen_there(commanded: Sequence[Binding], m: Map, class_of: Callable[[str],
         if sum(1 for p in m.places if class_key(p.cls) == class_key(place.cls)) != 1:
             continue
         kind = class_of(theme)
+        if class_key(kind) in knows:
+            continue
         share = mass(prior_of(m.priors, kind), Spot(class_key(place.name), place.cls, place.room, place.at))
         if share > 0:
             words = kind.replace("_", " ")

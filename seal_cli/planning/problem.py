@@ -75,6 +75,24 @@ THERE = frozenset({"there", "over there", "in there", "yonder"})
 HELD_PRONOUNS = frozenset({"it", "this", "that"})
 """Pronouns that, with nothing before them in the command, call what the robot holds."""
 
+PLURAL_PRONOUNS = frozenset({"them", "these", "those"})
+"""Pronouns that call what the robot holds, or what a done command handled last, when it is one thing said as a
+plural: a pair ("the gloves") or a noun with a plural form only ("the scissors") (:func:`said_as_plural`)."""
+
+
+def said_as_plural(name: str) -> bool:
+    """Whether one thing of a class (or an instance's name, ``gloves_1``) is called "them": its last word names a
+    pair in the plural (:data:`~seal_cli.planning.grounding.PAIRED`: "gloves", "goggles"; not "glass", a drinking
+    glass, nor "glove") or has a plural form only ("scissors", "pliers"). "hang them on the coat rack", holding the
+    gloves, was refused: nothing before "them" fit (e2e31)."""
+    from seal_cli.language.morphology import noun_lemma, plural_only
+
+    words = [w for w in class_words(name) if not w.isdigit()]
+    if not words:
+        return False
+    word = words[-1]        # a class named by the plural of a pair ("gloves", "glasses"; not a drinking "glass")
+    return (word != noun_lemma(word) and noun_lemma(word) in PAIRED) or plural_only(word)
+
 
 def instance_names(cls: str, n: int) -> tuple[str, ...]:
     """The names of ``n`` things of a class when nothing else is named: ``apple``, ``apple_2``, …"""
@@ -109,6 +127,16 @@ class Problem:
     """The commanded frames that put a thing "back" on or in a place they name ("put the book back on the bookshelf"):
     the thing is one on or in no place of the goal's class (:func:`the_ones_not_there`; ``seal run``'s robot asks it
     of what it sees, :meth:`seal_cli.sim.agent.Agent.already_so`)."""
+    done: tuple[Binding, ...] = ()
+    """The frames of the commands already done (``--done``), in order, each grounded after the ones before it ("pick
+    up the cup", then "put it on the table": the cup): ``seal run`` starts from their postconditions (e2e31: it
+    grounded each alone, and refused "it")."""
+    nearest: Mapping[Binding, tuple[str, ...]] = field(default_factory=dict)
+    """The commanded frames that carry a thing to the nearest of several places of a class the command did not tell
+    apart, nearest from where the robot takes it, with those places: ``seal run`` plans before it knows where the thing
+    lies (it guessed where one most likely lies), so it chooses again from where it took it, as ``seal plan`` chose
+    (e2e31: "put the brush in the sink" planned the finishing room's sink beside the brush's table; the run washed it in
+    the kitchen's, nearer the showroom's table it guessed)."""
 
 
 class Things:
@@ -461,9 +489,10 @@ def _values(phrase: Phrase, earlier: Sequence[Mapping[str, tuple[str, ...]]], th
     if word in INDEFINITE and things.map is not None and category not in ("message", "question"):
         raise _located(_unnamed_kind(phrase, things.map), phrase, text)
     if word in PRONOUNS and word not in PERSON_PRONOUNS and word not in INDEFINITE:
-        if things.handled_before and word in HELD_PRONOUNS:     # what the commands done acted on last
+        if things.handled_before and (word in HELD_PRONOUNS or (word in PLURAL_PRONOUNS and said_as_plural(
+                things.handled_before[-1]))):   # what the commands done acted on last ("them": the gloves)
             return (things.handled_before[-1],)
-        if things.held and word in HELD_PRONOUNS:
+        if things.held and (word in HELD_PRONOUNS or (word in PLURAL_PRONOUNS and said_as_plural(things.held))):
             return (things.name(things.held),)
         raise _located(f"cannot tell what {phrase.text!r} refers to: nothing before it in the command fits"
                        f"{', nor does a command done before it (--done)' if things.done_said else ''}", phrase, text)
@@ -1450,7 +1479,7 @@ def build_problem(parse: Parse, library: Library, *, holding: str | None = None,
         for element in frame.elements:
             if element.default is not None:
                 things.name(element.default)
-    carry_out_done(done, library, things)
+    done_frames = carry_out_done(done, library, things)
     commanded = commanded_frames(parse, library, things)
     _the_ones_said_where(commanded, things)
     the_ones_not_there(commanded, things)
@@ -1466,19 +1495,36 @@ def build_problem(parse: Parse, library: Library, *, holding: str | None = None,
                    tuple(b for b in things.put_away if b in commanded),
                    tuple(b for b in things.put_back if b in commanded), dict(things.called),
                    {b: places for b, places in among.items() if b in commanded},
-                   one_away=tuple(b for b in things.one_away if b in commanded))
+                   one_away=tuple(b for b in things.one_away if b in commanded),
+                   nearest=_nearest_from_the_thing(commanded, things), done=tuple(done_frames))
 
 
-def carry_out_done(done: Iterable[Parse], library: Library, things: Things) -> None:
+def _nearest_from_the_thing(commanded: Sequence[Binding], things: Things) -> dict[Binding, tuple[str, ...]]:
+    """The frames whose goal is the nearest of several places from where the robot takes the thing it carries there
+    (:attr:`Problem.nearest`), with those places: not one put away or back (chosen again by their own rules)."""
+    names = things.names
+    if names is None:
+        return {}
+    own = {*things.put_away, *things.put_back, *things.one_away}
+    return {b: names.nearest_of[goal] for b in commanded
+            if (goal := b.elements.get("goal")) in names.nearest_of and b not in own and b.elements.get("theme")
+            and any("theme" in a.args and "goal" in a.args for a in b.frame.actions)}
+
+
+def carry_out_done(done: Iterable[Parse], library: Library, things: Things) -> list[Binding]:
     """The commands already done (``--done``), in order, grounded and carried out on ``things``: each is context for
     the ones after it ("find Ben" → "him", "pick up the cup" → "it") and leaves the world as it left it (what the
-    next one, and the command, are grounded on: the book put on the table is fetched from the table)."""
+    next one, and the command, are grounded on: the book put on the table is fetched from the table). Their frames,
+    in order (:attr:`Problem.done`)."""
+    frames: list[Binding] = []
     for earlier in done:
         bindings = commanded_frames(earlier, library, things)
+        frames.extend(bindings)
         things.carry_out(earlier.text, bindings)
         things.named_before = [*things.named_before, *_people_named(bindings, things)]
         things.handled_before = [*things.handled_before, *_handled(bindings, things)]
         things.done_said = True
+    return frames
 
 
 def moved_by(binding: Binding) -> tuple[str, ...]:

@@ -153,7 +153,7 @@ class Agent:
                  put_back: Iterable[Binding] = (), told: Mapping[str, Sequence[str]] | None = None,
                  names: Mapping[str, str] | None = None, heed_sources: bool = False,
                  absent_said: bool = False, among: Mapping[Binding, Sequence[str]] | None = None,
-                 one_away: Iterable[Binding] = ()) -> None:
+                 one_away: Iterable[Binding] = (), nearest: Mapping[Binding, Sequence[str]] | None = None) -> None:
         self.scene = scene
         self.world = scene.world
         self.grid = scene.grid
@@ -212,6 +212,10 @@ class Agent:
         self.one_away: set[Binding] = set(one_away)
         """The commanded frames that put a thing "back" on or in a place they name (:attr:`seal_cli.planning.problem.
         Problem.one_away`): one of the kind seen on or in any place of the goal's class is not the one meant (e2e30)."""
+        self.nearest_of: dict[Binding, tuple[str, ...]] = {b: tuple(p) for b, p in (nearest or {}).items()}
+        """The commanded frames whose goal is the nearest of several places from where the thing is taken, with those
+        places (:attr:`seal_cli.planning.problem.Problem.nearest`): chosen again once the robot has taken it
+        (:meth:`_nearest_again`)."""
         self.not_meant: dict[str, set[str]] = {}
         """The instances a name does not stand for, by name: the one seen where a frame puts its kind already."""
         self.shut_there: dict[Binding, tuple[str, set[str]]] = {}
@@ -286,6 +290,13 @@ class Agent:
         for item in self.world.items.values():
             if not item.movable or oracle:
                 self.known[item.id] = self._known(item)
+
+    def remember(self, ids: Iterable[str]) -> None:
+        """Know where these things of the world lie as the run starts, as though seen: the ones the commands already
+        done moved (``seal run --done``), where the robot itself left them."""
+        for i in ids:
+            if i in self.world.items:
+                self.known[i] = self._known(self.world.items[i])
 
     def _known(self, item: Item) -> Known:
         parent = item.parent if item.parent in self.world.items and not self.world.items[item.parent].movable else None
@@ -562,6 +573,33 @@ class Agent:
         todo[0] = again
         return f"{held.id} lay on {lay}: puts it away on {goal}"
 
+    def _nearest_again(self, todo: list[Binding]) -> str | None:
+        """Choose again the goal of the next commanded frame, the nearest of several places the command did not tell
+        apart, now that the robot has taken the thing it carries there: the nearest by drive from where it lay, as
+        ``seal plan`` chooses it from where the map places the thing (the run planned from where one most likely
+        lies); the reason to replan, or None when the goal stands."""
+        from seal_cli.maps.reach import drive_lengths
+
+        if not todo or (among := self.nearest_of.get(todo[0])) is None or (held := self.held()) is None:
+            return None
+        if held.key != self.class_of(todo[0].elements.get("theme", "")) or len(among) < 2:
+            return None
+        lay = self.picked_from.get(held.id)
+        at = self.world.items[lay].at if lay in self.world.items else \
+            self.started.get(held.id, self.world.robot.pose[:2])
+        lengths = drive_lengths(self.scene.map, at, list(among))
+        best = min(range(len(among)), key=lambda k: (lengths[k], k))
+        goal = todo[0].elements.get("goal")
+        if among[best] == goal or math.isinf(lengths[best]):
+            return None
+        again = todo[0].frame.bind({**todo[0].elements, "goal": among[best]})
+        self.nearest_of[again] = self.nearest_of.pop(todo[0])
+        if todo[0] in self.among:
+            self.among[again] = self.among.pop(todo[0])
+        todo[0] = again
+        return (f"{held.id} lay {'on ' + lay if lay else 'there'}: takes it to {among[best]}, the nearest from there "
+                f"({lengths[best]:.1f} m), not {goal}")
+
     def _parent(self, item_id: str) -> Item:
         return self.world.items[self.world.items[item_id].parent or ""]
 
@@ -743,7 +781,7 @@ class Agent:
                     if (failed := self._replan(todo, self.resync(self.state))) is not None:
                         return self._result(False, failed, plan, executed, Reason.CANNOT)
                     continue
-                if (again := self._put_away_again(todo)) is not None:
+                if (again := self._put_away_again(todo) or self._nearest_again(todo)) is not None:
                     if (failed := self._replan(todo, self.resync(self.state))) is not None:
                         return self._result(False, failed, plan, executed, Reason.CANNOT)
                     self.say("replan", f"{again}; replans: " + ", ".join(self.shown_now(b) for b in self.steps))

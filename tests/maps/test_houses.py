@@ -13,7 +13,8 @@ from tests.conftest import module_from_file
 
 MAPS = Path(__file__).resolve().parents[2] / "maps"
 HOUSES = ["townhouse", "office_floor", "cafe", "clinic", "farmhouse", "terrace", "bungalow", "lodge", "flat",
-          "carehome", "student_house", "guesthouse", "studio", "corner_shop", "houseboat", "library", "bakery"]
+          "carehome", "student_house", "guesthouse", "studio", "corner_shop", "houseboat", "library", "bakery",
+          "workshop"]
 
 
 def make_houses():  # type: ignore[no-untyped-def]

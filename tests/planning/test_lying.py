@@ -113,3 +113,22 @@ def test_the_run_says_before_driving_why_it_may_look_for_another(library: Librar
     assert said("put the milk in the fridge", "corner_shop") == []      # one of two fridges: no other is sought
     assert said("bring me the kettle", "houseboat") == []               # no place as the goal
     assert said("put both mugs in the cupboard", "houseboat") == []    # several said: each is one of them
+
+
+def test_the_run_says_nothing_of_a_kind_it_knows_a_thing_of_after_done(library: Library) -> None:
+    """e2e31: after `--done 'bring the cup to the table'`, "put it back" on the apartment said "it knows no cup until
+    it sees one, and the map's prior puts one at coffee_table_1": the robot knows the cup the done command left on the
+    dining table (what it knows of the map holds the things it handled), so nothing is said."""
+    from seal_cli import pipeline
+    from seal_cli.language.grounding import vocabulary_of_map
+    from seal_cli.maps.formats.map_server import load_map
+    from seal_cli.planning.lying import unseen_there
+
+    m = load_map(MAPS / "apartment.yaml")
+    done = [parse_to_plan("bring the cup to the table", library)]
+    world, known = pipeline._after_done(m, done, library, None, m.known())
+    p = build_problem(parse_to_plan("put it back", library), library, done=done, map=known,
+                      vocabulary=vocabulary_of_map(m))
+    assert [str(b) for b in p.commanded] == ["Place(theme=cup, goal=coffee_table_1)"]
+    assert unseen_there(p.commanded, world, p.state.class_of) != []           # without what it knows: said
+    assert unseen_there(p.commanded, world, p.state.class_of, known) == []

@@ -1007,3 +1007,23 @@ def test_a_thing_in_sight_is_taken_before_one_shut_away_further_off(library: Lib
         "Go(goal=office)", "Pick(theme=mug, source=desk_1)"]
     assert [str(s) for s in plan("bring me a mug", library, map=m).steps][:2] == [
         "Open(theme=cupboard_1)", "Pick(theme=mug, source=cupboard_1)"]
+
+
+def test_them_calls_a_held_pair_or_a_plural_only_thing(library: Library) -> None:
+    """e2e31: "hang them on the coat rack", holding the gloves on the workshop, was refused (nothing before "them"
+    fit): one pair ("the gloves", "the goggles") or a plural-only thing ("the scissors") is called "them", held or
+    handled last by a done command; a hammer is still "it", not "them"."""
+    from seal_cli.errors import SealError
+    from seal_cli.maps.formats.map_server import load_map
+    from seal_cli.pipeline import plan
+    from seal_cli.planning.problem import said_as_plural
+
+    m = load_map(Path(__file__).resolve().parents[2] / "maps" / "workshop.yaml")
+    assert [str(s) for s in plan("hang them on the coat rack", library, map=m, holding="gloves").steps] == [
+        "Place(theme=gloves, goal=coat_rack_1)"]
+    assert [str(s) for s in plan("give them to Ben", library, map=m, done=["pick up the goggles"]).steps] == [
+        "Give(theme=goggles, recipient=ben)"]
+    with pytest.raises(SealError, match="cannot tell what 'them' refers to"):
+        plan("give them to Ben", library, map=m, holding="hammer")
+    assert said_as_plural("scissors") and said_as_plural("gloves_1") and said_as_plural("glasses")
+    assert not said_as_plural("hammer") and not said_as_plural("glass") and not said_as_plural("glove")

@@ -1402,8 +1402,8 @@ class SeFMPolicy(Policy):
         for x, y, r in self.sefm.hidden_places():
             hidden |= np.hypot(X[:, 0] - x, X[:, 1] - y) <= r
         options: list[tuple[float, float, View]] = []
-        for place in agent.known.values():
-            if place.movable or place.id in agent.inspected:
+        for place in self._places(agent):   # not a person: the belief near Carla is the bookshelf's, not hers (e2e31)
+            if place.id in agent.inspected:
                 continue
             where = self.map.place(place.id)
             reach = where.reach if where is not None else agent.world.reach

@@ -756,3 +756,24 @@ def test_with_the_priors_rooms_looked_at_the_search_turns_to_the_rooms_they_do_n
     view = policy.next_view(agent, agent.steps[0], "cup")
     assert view is not None
     assert m.room_of([agent.grid.point(view.cell)])[0] not in ("bedroom", "family_room")
+
+
+def test_the_house_wide_look_is_at_a_place_never_at_a_person(library: Library) -> None:
+    """e2e31: the guesthouse's search for a second book "looks at Carla, where the belief is": people are known to the
+    robot as items that do not move, and the house-wide choice weighed each as a place, by the belief within reach of
+    where they stand. A person is not where a thing lies: with the shelves looked at, the belief beside Carla (who
+    stands by them) is no reason to drive to her."""
+    from seal_cli.sim.world import PERSON
+
+    carla = Item("carla", PERSON, (1.5, 0.9), movable=False)
+    scene = corridor(library, {"apple": {"shelf": 0.9}}, extra=(carla,))
+    policy = SeFMPolicy(particles=100)
+    agent = ready(library, scene, policy, [("Pick", {"theme": "apple"})])
+    assert "carla" in agent.known and not agent.known["carla"].movable
+    agent.inspected |= {"shelf_1", "shelf_2"}
+    X, W, modes = policy.cloud(agent, "apple")
+    view = policy._house_best(agent, "apple", X, W / W.sum(), modes)
+    assert view is None or "carla" not in view.why
+    agent.inspected.discard("shelf_2")              # a place still holds belief: that is the look, not the person
+    view = policy._house_best(agent, "apple", X, W / W.sum(), modes)
+    assert view is not None and view.why == "looks at shelf_2, where the belief is"
