@@ -3705,3 +3705,48 @@ def test_a_learners_tell_to_me_and_an_arrow_between_bare_phrases(
     the first goes (between clauses it still joins them); "when you get to X" after a command is going there, not
     the command's object brought there; "by you" after a passive command is the robot, no place."""
     assert_reads(text, want, library)
+
+
+@pytest.mark.parametrize(("text", "want"), [
+    ("take the jar to the shed. then go", [("Bring", {"theme": "jar", "goal": "shed"}), ("Go", {})]),
+    ("fetch the rake and come", [("Pick", {"theme": "rake"}), ("Go", {})]),
+    ("open the gate, then go", [("Open", {"theme": "gate"}), ("Go", {})]),
+    ("go and fetch the rake", [("Pick", {"theme": "rake"})]),                  # "go and" before a verb: as before
+])
+def test_a_verb_of_going_said_last_is_a_clause_not_politeness(
+        text: str, want: list[tuple[str, dict[str, str]]], library: Library) -> None:
+    """words40: "go", "come" are politeness only before another verb ("go and fetch"); said last they are the
+    command's last step ("bring one. then go" dropped "then go" silently)."""
+    assert_reads(text, want, library)
+
+
+@pytest.mark.parametrize(("text", "want"), [
+    ("go and have a look for the rake in the shed", [("Find", {"theme": "rake", "ground": "shed"})]),
+    ("come and take a look at the painting", [("LookAt", {"theme": "painting"})]),
+])
+def test_go_and_before_a_light_verb_is_politeness(
+        text: str, want: list[tuple[str, dict[str, str]]], library: Library) -> None:
+    """words40: "go and" before "have a look for" is as before any verb (it was a Go of its own)."""
+    assert_reads(text, want, library)
+
+
+@pytest.mark.parametrize(("text", "want"), [
+    ("lead the way for Ada to the porch", [("Guide", {"theme": "Ada", "goal": "porch"})]),
+    ("lead the way to the porch", [("Guide", {"goal": "porch"})]),
+    ("show Ada the way to the porch", [("Guide", {"theme": "Ada", "goal": "porch"})]),
+])
+def test_leading_the_way_is_guiding(text: str, want: list[tuple[str, dict[str, str]]], library: Library) -> None:
+    """words40: "lead the way for X" guides X ("the way" was Guide's theme, X the goal)."""
+    assert_reads(text, want, library)
+
+
+@pytest.mark.parametrize(("text", "want"), [
+    ("find the guy in the hat", [("Find", {"theme": "guy"})]),
+    ("hand the chap on the bench his scarf", [("Give", {"theme": "scarf", "recipient": "chap"})]),
+    ("follow the dude with the skateboard", [("Follow", {"theme": "dude"})]),
+])
+def test_a_person_named_informally_is_a_person(
+        text: str, want: list[tuple[str, dict[str, str]]], library: Library) -> None:
+    """words40: guy, chap, dude are people (``build_person_nouns`` rule 4); "find the guy with the beard" was a Pick
+    of the beard and a Find."""
+    assert_reads(text, want, library)
