@@ -49,8 +49,9 @@ OUT = ROOT / "framelib" / "wordnet_people.yaml"
 PERSON = "00007846"                      # person.n.01: a human being
 RUDE = re.compile(r"offensive|derogatory|disparag|slang|vulgar|contempt|obscen|insult|abusive|informal")
 SEX_OR_AGE = ("10287213", "10787470", "09624168", "09619168",  # man.n.01, woman.n.01, male.n.02, female.n.02
-              "09917593", "10285313", "10129825", "10084295",  # child.n.01, male_child.n.01, girl.n.01, female_child.n.01
-              "09605289", "09622049", "10804406")              # adult.n.01, juvenile.n.01, young_person.n.01
+              "09917593", "10285313", "10129825", "10084295",  # child.n.01, male_child.n.01, girl.n.01,
+              "09605289", "09622049", "10804406")              # female_child.n.01, adult.n.01, juvenile.n.01,
+#                                                                 young_person.n.01
 UNCIVIL = re.compile(r"offensive|derogatory|disparag|slang|vulgar|contempt|obscen|insult|abusive")
 REGISTER = "colloquialism"               # the one usage label that is a register, not an insult
 HEADER = """\
@@ -132,9 +133,9 @@ def person_nouns(nouns: Nouns) -> list[str]:
     for noun, offsets in nouns.senses.items():
         if not (noun.isalpha() and noun in nouns.lower):
             continue
-        if nouns.was_tagged(noun) and all(map(is_person, offsets)) and not any(o in nouns.rude for o in offsets):
-            found.append(noun)
-        elif names_by_sex_or_age(nouns, noun, is_person):
+        every_sense = nouns.was_tagged(noun) and all(map(is_person, offsets)) and \
+            not any(o in nouns.rude for o in offsets)
+        if every_sense or names_by_sex_or_age(nouns, noun, is_person):
             found.append(noun)
     return sorted(found)
 
