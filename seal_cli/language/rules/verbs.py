@@ -38,7 +38,7 @@ def _left_alone(s: State, i: int) -> Match | None:
     words = s.words
     found = s.verb_at(i)
     if found is None or found[1] != 1 or found[2] is not None or words[i].lower != found[0] or \
-            found[0] not in s.lexicon.puts or DEPARTURE_MEANS not in s.lexicon.units or \
+            found[0] not in s.lexicon.puts_only or DEPARTURE_MEANS not in s.lexicon.units or \
             (object_share(found[0]) or 1.0) >= DEPARTURE_OBJECT_SHARE:
         return None                                   # "heat the soup and put": "put" has an object always
     k = i + 1
