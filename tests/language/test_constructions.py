@@ -3763,3 +3763,9 @@ def test_leave_with_nothing_after_it_is_going_away(
     """words40: "... and then leave" was a Place of the thing just handled; "leave" is said with no object in over a
     tenth of its uses (WordNet, ``verb_objects.tsv``), and with nothing after it the robot goes away."""
     assert_reads(text, want, library)
+
+
+def test_a_unit_another_frame_lists_said_alone_is_that_frames(library: Library) -> None:
+    """words40: "leave" alone is going away because only Place lists it; "return" is Go's too, and stays its."""
+    parse = parse_command("go to the shed and return", library)
+    assert [(f.frame, f.lexical_unit) for f in parse.frames][-1] == ("Go", "return")

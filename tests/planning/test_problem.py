@@ -1007,3 +1007,17 @@ def test_a_thing_in_sight_is_taken_before_one_shut_away_further_off(library: Lib
         "Go(goal=office)", "Pick(theme=mug, source=desk_1)"]
     assert [str(s) for s in plan("bring me a mug", library, map=m).steps][:2] == [
         "Open(theme=cupboard_1)", "Pick(theme=mug, source=cupboard_1)"]
+
+
+@pytest.mark.parametrize(("text", "plan"), [
+    ("find the rolling pin", "Find(theme=rolling_pin)"),          # the map knows no pin: the compound said
+    ("find the red tennis ball", "Find(theme=tennis_ball)"),      # "red" is an adjective, no part of the kind
+    ("find the big cup", "Find(theme=cup)"),                      # the map knows cups: as before
+])
+def test_a_kind_the_map_knows_nothing_of_is_the_compound_said(library: Library, text: str, plan: str) -> None:
+    """words40: "where is the rolling pin?" on a map with no pin was planned and answered as a pin."""
+    from seal_cli.maps.formats.map_server import load_map
+    from seal_cli.resources import map_path
+
+    apartment = load_map(map_path("apartment"))
+    assert [str(b) for b in problem_of_text(text, library, map=apartment).commanded] == [plan]
