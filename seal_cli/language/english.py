@@ -548,6 +548,10 @@ PATH_ALONE = frozenset(["to", "into", "onto"])
 """"*To* the bathroom", "*back to* the kitchen, please": a command that is only where to go (the preposition's
 canonical form, ``PREPOSITIONS``) is going there (``PATH_MEANS``)."""
 PATH_MEANS = "go"
+DEPARTURE_MEANS = "go"
+""""Grab the cup and *leave*": a one-word unit that puts its object somewhere, said with no object and nothing after it
+but "now" or "please", is the robot going away (words40; said in a subordinate clause it is the time of the
+command, ``State._departure_end``): the library's unit of going."""
 ASKED_ALONE = frozenset(["please"])
 """"Milk from the fridge, *please*", "the remote, please": a noun phrase and "please" with no verb in the
 sentence is a request for the thing, "bring me ..." (``REQUEST_MEANS``)."""

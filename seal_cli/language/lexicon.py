@@ -142,6 +142,9 @@ class Lexicon:
     the theme that two frames' postconditions say, one way or the other: open/closed, on/off, hot/cold; what the
     robot holds is its hands' state, not the thing's: frames that empty or fill its hands are left out): "did you
     *close* the door?" is answered by looking at it, since it may have been opened again (words25)."""
+    puts_only: frozenset[str] = frozenset()
+    """Units of ``puts`` that no other frame lists ("leave", "put"; not "return", "move", also Go's): said alone,
+    with no object, "leave" is going away (rule ``leave with nothing after it``, words40)."""
 
     @classmethod
     def of(cls, library: Library) -> Lexicon:
@@ -165,9 +168,12 @@ class Lexicon:
         can = tuple(dict.fromkeys(frame.lexical_units[0].text for frame in library.frames if frame.lexical_units))
         apart = {unit.text: frozenset(unit.apart) for frame in library.frames for unit in frame.lexical_units
                  if unit.apart}
-        puts = frozenset(unit.text for frame in library.frames if frame.elements and any(
+        putting = [frame for frame in library.frames if frame.elements and any(
             not p.negated and p.predicate == "in" and p.args == (frame.elements[0].role, "goal")
-            for p in frame.postconditions) for unit in frame.lexical_units)
+            for p in frame.postconditions)]
+        puts = frozenset(unit.text for frame in putting for unit in frame.lexical_units)
+        puts_only = puts - frozenset(unit.text for frame in library.frames if frame not in putting
+                                     for unit in frame.lexical_units)
         stores = frozenset(unit.text for frame in library.frames for unit in frame.lexical_units if unit.stores)
         split = {unit.text: frozenset(c for c in taxonomy.known_classes if frame.elements and
                                       taxonomy.is_a(c, frame.elements[0].type) is False) | PARTS
@@ -188,7 +194,7 @@ class Lexicon:
                    tuple(sorted(library.by_unit)), speech, goals, recipients, things, people, escorts, apart, can, puts,
                    stores, split, frozenset(unit.split()[0] for unit in split), people_only,
                    frozenset(unit.text for frame in library.frames for unit in frame.lexical_units if unit.opening),
-                   motionless, undoable)
+                   motionless, undoable, puts_only)
 
     @cached_property
     def verb_set(self) -> frozenset[str]:

@@ -91,6 +91,8 @@ from seal_cli.language.rule import Match
 from seal_cli.language.tags import Tag
 from seal_cli.language.tokens import CommandError, Word, capitalised
 
+LIGHT_VERBS = frozenset(["take", "have"])
+"""Light verbs said with a noun that is a lexical unit ("*have* a look for", :meth:`State.light_verb`)."""
 _PUT_IN = frozenset(["in", "on", "inside"])
 """Prepositions (canonical) of where a thing is put, besides those of a path ("into", "onto")."""
 _SOURCES = frozenset(["from", "out of", "off"])
@@ -99,7 +101,7 @@ _SOURCES = frozenset(["from", "out of", "off"])
 if TYPE_CHECKING:
     from seal_cli.language.lexicon import Lexicon
 
-__all__ = ["CLOSED", "IN_NP", "State", "longest_phrase", "match_phrase", "merge"]
+__all__ = ["CLOSED", "IN_NP", "LIGHT_VERBS", "State", "longest_phrase", "match_phrase", "merge"]
 
 # ---------------------------------------------------------------------------------------------
 # Phrases of closed-class words, and the first words of what the tagger looks at specially
@@ -470,8 +472,9 @@ class State:
                 i += 1                  # "Dear, could you *possibly* close ...": an adverb after politeness (words25)
                 continue
             break
-        if i < len(self.words) and (self.verb_at(i) is not None or self.use_at(i)):
-            return True
+        if i < len(self.words) and (self.verb_at(i) is not None or self.use_at(i) or
+                                    self.words[i].lower in LIGHT_VERBS and self.light_verb(i) is not None):
+            return True                 # "go and *have a look for* the sponge": a light verb (words40)
         return start < i and (start < len(self.words) and self.verb_at(start) is not None or
                               said != start and self.verb_at(said) is not None)
 
@@ -993,6 +996,24 @@ class State:
             else:
                 break
         return polite and i < len(words) and self.verb_at(i) is not None
+
+    def light_verb(self, i: int) -> tuple[int, str] | None:
+        """A light verb and a noun that is a lexical unit at ``i`` ("take a (quick) look at", "have a look *in the
+        fridge*"): how many words it takes and the unit it says; None when there is none."""
+        words = self.words
+        if self.next_lower(i) not in ("a", "another"):
+            return None
+        for k in (i + 2, i + 3):                                      # "take a (quick) look at"
+            for unit in self.lexicon.units.get(words[k].lower if k < len(words) else "", ()):
+                if len(unit) > 1 and unit[1] in PREPOSITIONS and \
+                        all(k + m < len(words) and words[k + m].lower == unit[m] for m in range(len(unit))):
+                    return k + len(unit) - i, " ".join(unit)
+        for k in (i + 2, i + 3):           # "have a look *in the fridge* for the butter", "take a walk around it"
+            noun = words[k].lower if k + 1 < len(words) else ""
+            if (noun,) in self.lexicon.units.get(noun, ()) and noun not in self.lexicon.things and \
+                    match_phrase(words, k + 1, LOCATIVE) > 0:
+                return k + 1 - i, noun
+        return None
 
     def use_at(self, i: int) -> bool:
         """Whether "use X to V ..." starts at ``i`` ("use a knife to slice the apple"): X is what V

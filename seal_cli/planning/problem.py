@@ -504,6 +504,8 @@ def _values(phrase: Phrase, earlier: Sequence[Mapping[str, tuple[str, ...]]], th
         value = " ".join(re.findall(r"[A-Za-z0-9]+", value))
     if things.names is not None and phrase.cls and not _names(phrase, phrase.cls, things):
         value = phrase.head     # on a map, a class the words do not name is a guess: the thing said is sought
+    if not phrase.cls and category not in ("message", "question") and things.map is not None:
+        value = _compound_said(phrase, value, things.map, things.taxonomy)
     if not class_key(value):
         raise _located(f"{phrase.text!r} names no thing", phrase, text)
     if vessel and carried and not asked and things.map is not None and (kept := _kept_in(value, things)):
@@ -526,6 +528,25 @@ def _values(phrase: Phrase, earlier: Sequence[Mapping[str, tuple[str, ...]]], th
         raise _located(f"{phrase.text!r} asks for {count:,} things; seal plans for at most {MAX_COUNT} "
                        "of a kind", phrase, text)
     return things.instances(value, count)
+
+
+def _compound_said(phrase: Phrase, value: str, m: Map, taxonomy: Taxonomy) -> str:
+    """The kind a phrase names on a map that knows nothing of its head (no prior, object or place of it, nor of a kind
+    of it): the head with the words said right before it that are no adjectives ("the *rolling* pin", "a *tennis*
+    ball", not "the *red* cup"), the compound the user said, so that the run says "no rolling pin found", not "no pin
+    found" (words40). ``value`` as it was when the map knows the head or nothing comes before it."""
+    from seal_cli.language.morphology import parts_of_speech
+
+    known = set(m.priors) | {o.cls for o in m.objects} | {p.cls for p in m.places}
+    key = class_key(value)
+    if not key or key in known or any(taxonomy.is_a(k, key) is True for k in known):
+        return value
+    before: list[str] = []
+    for word in reversed(phrase.modifiers):
+        if not word.isalpha() or "adj" in parts_of_speech(word.lower()):
+            break
+        before.insert(0, word.lower())
+    return " ".join([*before, value]) if before else value
 
 
 def _another_said(evoked: Evoked, earlier: Sequence[Mapping[str, tuple[str, ...]]], things: Things) -> bool:

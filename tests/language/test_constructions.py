@@ -3934,3 +3934,67 @@ def test_what_the_sentence_is_about_said_first(text: str, want: list[tuple[str, 
 def test_a_question_after_regarding_is_told_whole(library: Library) -> None:
     (tell,) = parse_command("regarding the jars on the shelf, which is the oldest?", library).frames
     assert tell.frame == "Tell" and tell.elements["message"].text.startswith("regarding the jars")
+
+
+@pytest.mark.parametrize(("text", "want"), [
+    ("take the jar to the shed. then go", [("Bring", {"theme": "jar", "goal": "shed"}), ("Go", {})]),
+    ("fetch the rake and come", [("Pick", {"theme": "rake"}), ("Go", {})]),
+    ("open the gate, then go", [("Open", {"theme": "gate"}), ("Go", {})]),
+    ("go and fetch the rake", [("Pick", {"theme": "rake"})]),                  # "go and" before a verb: as before
+])
+def test_a_verb_of_going_said_last_is_a_clause_not_politeness(
+        text: str, want: list[tuple[str, dict[str, str]]], library: Library) -> None:
+    """words40: "go", "come" are politeness only before another verb ("go and fetch"); said last they are the
+    command's last step ("bring one. then go" dropped "then go" silently)."""
+    assert_reads(text, want, library)
+
+
+@pytest.mark.parametrize(("text", "want"), [
+    ("go and have a look for the rake in the shed", [("Find", {"theme": "rake", "ground": "shed"})]),
+    ("come and take a look at the painting", [("LookAt", {"theme": "painting"})]),
+])
+def test_go_and_before_a_light_verb_is_politeness(
+        text: str, want: list[tuple[str, dict[str, str]]], library: Library) -> None:
+    """words40: "go and" before "have a look for" is as before any verb (it was a Go of its own)."""
+    assert_reads(text, want, library)
+
+
+@pytest.mark.parametrize(("text", "want"), [
+    ("lead the way for Ada to the porch", [("Guide", {"theme": "Ada", "goal": "porch"})]),
+    ("lead the way to the porch", [("Guide", {"goal": "porch"})]),
+    ("show Ada the way to the porch", [("Guide", {"theme": "Ada", "goal": "porch"})]),
+])
+def test_leading_the_way_is_guiding(text: str, want: list[tuple[str, dict[str, str]]], library: Library) -> None:
+    """words40: "lead the way for X" guides X ("the way" was Guide's theme, X the goal)."""
+    assert_reads(text, want, library)
+
+
+@pytest.mark.parametrize(("text", "want"), [
+    ("find the guy in the hat", [("Find", {"theme": "guy"})]),
+    ("hand the chap on the bench his scarf", [("Give", {"theme": "scarf", "recipient": "chap"})]),
+    ("follow the dude with the skateboard", [("Follow", {"theme": "dude"})]),
+])
+def test_a_person_named_informally_is_a_person(
+        text: str, want: list[tuple[str, dict[str, str]]], library: Library) -> None:
+    """words40: guy, chap, dude are people (``build_person_nouns`` rule 4); "find the guy with the beard" was a Pick
+    of the beard and a Find."""
+    assert_reads(text, want, library)
+
+
+@pytest.mark.parametrize(("text", "want"), [
+    ("fetch the rake and leave", [("Pick", {"theme": "rake"}), ("Go", {})]),
+    ("put the jar in the shed, then leave now.", [("Place", {"theme": "jar", "goal": "shed"}), ("Go", {})]),
+    ("leave the rake in the shed", [("Place", {"theme": "rake", "goal": "shed"})]),      # an object: put there
+    ("warm the soup and put", [("Heat", {"theme": "soup"}), ("Place", {"theme": "soup"})]),  # "put": always one
+])
+def test_leave_with_nothing_after_it_is_going_away(
+        text: str, want: list[tuple[str, dict[str, str]]], library: Library) -> None:
+    """words40: "... and then leave" was a Place of the thing just handled; "leave" is said with no object in over a
+    tenth of its uses (WordNet, ``verb_objects.tsv``), and with nothing after it the robot goes away."""
+    assert_reads(text, want, library)
+
+
+def test_a_unit_another_frame_lists_said_alone_is_that_frames(library: Library) -> None:
+    """words40: "leave" alone is going away because only Place lists it; "return" is Go's too, and stays its."""
+    parse = parse_command("go to the shed and return", library)
+    assert [(f.frame, f.lexical_unit) for f in parse.frames][-1] == ("Go", "return")

@@ -1027,3 +1027,17 @@ def test_them_calls_a_held_pair_or_a_plural_only_thing(library: Library) -> None
         plan("give them to Ben", library, map=m, holding="hammer")
     assert said_as_plural("scissors") and said_as_plural("gloves_1") and said_as_plural("glasses")
     assert not said_as_plural("hammer") and not said_as_plural("glass") and not said_as_plural("glove")
+
+
+@pytest.mark.parametrize(("text", "plan"), [
+    ("find the rolling pin", "Find(theme=rolling_pin)"),          # the map knows no pin: the compound said
+    ("find the red tennis ball", "Find(theme=tennis_ball)"),      # "red" is an adjective, no part of the kind
+    ("find the big cup", "Find(theme=cup)"),                      # the map knows cups: as before
+])
+def test_a_kind_the_map_knows_nothing_of_is_the_compound_said(library: Library, text: str, plan: str) -> None:
+    """words40: "where is the rolling pin?" on a map with no pin was planned and answered as a pin."""
+    from seal_cli.maps.formats.map_server import load_map
+    from seal_cli.resources import map_path
+
+    apartment = load_map(map_path("apartment"))
+    assert [str(b) for b in problem_of_text(text, library, map=apartment).commanded] == [plan]

@@ -115,6 +115,7 @@ CLAUSE_START: tuple[Rule, ...] = (
     requests.ASKED_ALONE_RULE,
     telegraphic.TELEGRAPHIC,
     requests.SWITCHED_BY_UNKNOWN,
+    verbs.LEFT_ALONE,
     verbs.USE,
     verbs.VERB,
     statements.DISLOCATED,

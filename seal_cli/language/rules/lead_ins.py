@@ -20,7 +20,6 @@ from seal_cli.language.english import (
     FREQUENCY_LEADS,
     HAVING_FIRST,
     HAVING_MEANS,
-    LOCATIVE,
     NOMINATIVE,
     NP_OPENERS,
     NUMBERS,
@@ -45,6 +44,7 @@ from seal_cli.language.rules.numbers import TEENS, TENS
 from seal_cli.language.state import (
     CLOSED,
     LEAD_FIRST,
+    LIGHT_VERBS,
     SEP_FIRST,
     SUB_FIRST,
     TIME_FIRST,
@@ -368,22 +368,11 @@ def _aspect(s: State, i: int) -> Match | None:
 
 
 def _light_verb(s: State, i: int) -> Match | None:
-    words = s.words
-    if s.next_lower(i) not in ("a", "another"):
+    found = s.light_verb(i)
+    if found is None:
         return None
-    for k in (i + 2, i + 3):                                      # "take a (quick) look at"
-        for unit in s.lexicon.units.get(words[k].lower if k < len(words) else "", ()):
-            if len(unit) > 1 and unit[1] in PREPOSITIONS and \
-                    all(k + m < len(words) and words[k + m].lower == unit[m] for m in range(len(unit))):
-                text = " ".join(unit)
-                return Match(k + len(unit) - i, (merge(words, i, k + len(unit) - i, Tag.VERB, text),),
-                             expect=False, verb=text)
-    for k in (i + 2, i + 3):               # "have a look *in the fridge* for the butter", "take a walk around it"
-        noun = words[k].lower if k + 1 < len(words) else ""
-        if (noun,) in s.lexicon.units.get(noun, ()) and noun not in s.lexicon.things and \
-                match_phrase(words, k + 1, LOCATIVE) > 0:
-            return Match(k + 1 - i, (merge(words, i, k + 1 - i, Tag.VERB, noun),), expect=False, verb=noun)
-    return None
+    n, text = found
+    return Match(n, (merge(s.words, i, n, Tag.VERB, text),), expect=False, verb=text)
 
 
 WATCHING = ("check on", frozenset(["keep an eye on", "keep an eye out for", "keep watch on", "keep watch over",
@@ -552,7 +541,7 @@ LIGHT_VERB = Rule("take a look at", _light_verb, (
     Example("take a quick look at the painting", "take a quick look at", Tag.VERB),
     Example("have a look in the fridge for the butter", "have a look", Tag.VERB),      # the noun's unit, a place after
     Example("take a walk around the garden", "take a walk", Tag.VERB),
-), frozenset(["take", "have"]), "a light verb and a noun that is a lexical unit (with its preposition, or a place)")
+), LIGHT_VERBS, "a light verb and a noun that is a lexical unit (with its preposition, or a place)")
 WATCHING_RULE = Rule("keep an eye on", _watching, (
     Example("keep an eye on the soup", "keep an eye on", Tag.VERB),
     Example("please keep watch over the baby", "keep watch over", Tag.VERB),

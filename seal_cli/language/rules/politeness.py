@@ -147,9 +147,10 @@ def _politeness(s: State, i: int) -> Match | None:
         #   "what about the dishes?": a question, no suggestion of a deed ("what about closing it": words30)
     if n and not (n == 1 and low in ("and", "then") and not s.out and not s.verb_after(i + 1) and
                   not _question_next(s, i + 1)) and (
-            low in ("to", "and", "then") or s.verb_after(i + n) or i + n >= len(words) or not s.verb_at(i)):
+            low in ("to", "and", "then") or s.verb_after(i + n) or not s.verb_at(i) or
+            i + n >= len(words) and n > 1):
         return Match(n, (merge(words, i, n, Tag.POLITE),))
-    return None
+    return None                                       # "bring one. then *go*": a verb said last is no politeness
 
 
 _QUESTION_FIRST = QUESTION_WORDS | {"where", "where's", "whereabouts", "how"}

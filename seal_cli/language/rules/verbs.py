@@ -3,12 +3,21 @@
 
 from __future__ import annotations
 
-from seal_cli.language.english import PARTICLES, PATH_ALONE, PATH_MEANS, PREPOSITIONS, TITLES
+from seal_cli.language.english import (
+    DEPARTURE_MEANS,
+    END_MARKS,
+    PARTICLES,
+    PATH_ALONE,
+    PATH_MEANS,
+    PREPOSITIONS,
+    TITLES,
+)
 from seal_cli.language.morphology import in_dictionary, in_verb_tables, noun_lemma, verb_lemma
 from seal_cli.language.rule import Example, Match, Rule
 from seal_cli.language.state import CLOSED, State, match_phrase, merge
 from seal_cli.language.tags import Tag
 from seal_cli.language.tokens import Word, capitalised
+from seal_cli.language.verb_objects import object_share
 
 
 def _split_particle(s: State, i: int) -> Match | None:
@@ -17,6 +26,27 @@ def _split_particle(s: State, i: int) -> Match | None:
         return None
     w = s.words[i]
     return Match(1, (Word(w.text, w.start, w.end, Tag.PARTICLE, unit, w.lower),))
+
+
+DEPARTURE_OBJECT_SHARE = 0.9
+"""A unit that puts its object somewhere is going away when said alone only if WordNet says its verb is said with no
+object in more than a tenth of its uses (:mod:`seal_cli.language.verb_objects`): "leave" 0.638, "move" 0.419 are;
+"put" 1.000, "place" 0.974, "set" 0.958 are not."""
+
+
+def _left_alone(s: State, i: int) -> Match | None:
+    words = s.words
+    found = s.verb_at(i)
+    if found is None or found[1] != 1 or found[2] is not None or words[i].lower != found[0] or \
+            found[0] not in s.lexicon.puts_only or DEPARTURE_MEANS not in s.lexicon.units or \
+            (object_share(found[0]) or 1.0) >= DEPARTURE_OBJECT_SHARE:
+        return None                                   # "heat the soup and put": "put" has an object always
+    k = i + 1
+    while k < len(words) and words[k].lower in ("now", "please"):
+        k += 1
+    if k < len(words) and words[k].lower not in END_MARKS:
+        return None                                   # "leave the cup", "leave it on the desk": what is put
+    return Match(1, (merge(words, i, 1, Tag.VERB, DEPARTURE_MEANS),), expect=False, verb=DEPARTURE_MEANS, using=False)
 
 
 def _use(s: State, i: int) -> Match | None:
@@ -122,6 +152,10 @@ SPLIT_PARTICLE = Rule("split particle", _split_particle, (
 USE = Rule("use X to V", _use, (
     Example("use a knife to slice the apple", "use", Tag.PREP),
 ), frozenset(["use", "using"]), "'use X to V': X is what V is done with")
+LEFT_ALONE = Rule("leave with nothing after it", _left_alone, (
+    Example("grab the cup and leave", "leave", Tag.VERB),
+    Example("put the mug away, then leave now.", "leave", Tag.VERB),
+), None, "a unit that puts its object somewhere, said with nothing after it: going away (english.DEPARTURE_MEANS)")
 VERB = Rule("verb", _verb, (
     Example("tell me how many cups are on the table", "tell me how many", Tag.VERB),
     Example("putting the cup on the table", "putting", Tag.VERB),
