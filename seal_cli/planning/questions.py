@@ -161,9 +161,16 @@ def reports(message: str) -> bool:
     return bool(words) and (words[0] in WH_WORDS or any(w in POINTING_BACK for w in words))
 
 
+NAME_OF = frozenset({"name", "names"})
+"""A message that asks for the name of someone somewhere ("tell me *the name of* the person in the office") asks who
+is there: the robot goes, looks, and says whom it saw by name. English, not any corpus's."""
+
+
 def _what(message: str, names: MapNames | None) -> Question | None:
     """The ``what`` question a message asks, if it asks what or who is on, in or at a map place or room."""
     words = message.lower().replace("'", "").replace("’", "").split()
+    if names is not None and (named := _name_of(words, names)) is not None:
+        return named
     if not words or words[0] not in ASKING_WHAT or names is None:
         return None
     for i in range(1, len(words)):
@@ -175,6 +182,28 @@ def _what(message: str, names: MapNames | None) -> Question | None:
                     said = "in" if relation in ("inside", "in") else "on" if relation in ("on", "on top of") else "at"
                     return Question("what", found.id, said, ASKING_WHAT[words[0]])
                 return None
+    return None
+
+
+def _name_of(words: Sequence[str], names: MapNames) -> Question | None:
+    """"the name of the person in the office", "the names of the people at the door": who is there (lead, stop 42:
+    the run said "name" to the speaker, the message's head, and drove nowhere). The words between "of" and the place
+    must name a person ("the name of the book on the shelf" is no such question)."""
+    said = list(words[1:] if words[:1] == ["the"] else words)
+    if len(said) < 4 or said[0] not in NAME_OF or said[1] != "of":
+        return None
+    for i in range(3, len(said)):
+        for relation in CONTAINING:
+            rel = relation.split()
+            if said[i:i + len(rel)] != rel:
+                continue
+            if not any(names.taxonomy.is_a(w, "person") is True for w in words_of(" ".join(said[2:i]))):
+                return None
+            found = _longest_grounded(said[i + len(rel):], names)
+            if found is None:
+                return None
+            return Question("what", found.id, "in" if relation in ("inside", "in") else
+                            "on" if relation in ("on", "on top of") else "at", "person")
     return None
 
 

@@ -61,6 +61,23 @@ def test_a_question_about_a_room_or_fixed_thing_the_map_lacks_is_refused_at_the_
     assert refused.value.where.column == 1
 
 
+@pytest.mark.parametrize(("text", "question"), [
+    ("tell me the name of the person in the kitchen", Question("what", "kitchen", "in", "person")),
+    ("give me the names of the people in the bedroom", Question("what", "bedroom", "in", "person")),
+    ("tell me the name of the woman at the dining table", Question("what", "dining_table_1", "at", "person")),
+])
+def test_the_name_of_someone_somewhere_asks_who_is_there(text: str, question: Question, library: Library) -> None:
+    """The run said "name" to the speaker (the message's head) and drove nowhere (lead, stop 42)."""
+    got = [q for _, q in asked(text, library)]
+    assert got and all(q == question for q in got)
+
+
+def test_the_name_of_a_thing_is_no_question_of_who_is_there(library: Library) -> None:
+    assert [q.kind for _, q in asked("tell me the name of the book on the sofa", library)] != ["what"]
+    with pytest.raises(SealError, match="the apartment has no garden"):
+        asked("tell me the name of the person in the garden", library)
+
+
 def test_a_message_that_asks_nothing_of_the_map_is_no_question(library: Library) -> None:
     assert asked("tell me a joke", library) == []
     assert asked("what is on the moon?", library) == []            # a place the map lacks: nothing to look at
