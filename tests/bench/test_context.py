@@ -278,12 +278,11 @@ def test_bench_tasks_context_held_out_runs_the_cases_chosen_on_the_drawn_houses(
     text = min({c["command"] for c in cases}, key=lambda t: sum(c["command"] == t for c in cases))
     mine = [c for c in cases if c["command"] == text]
     result = runner.invoke(app, ["bench", "tasks", "--suite", "context_held_out", "--command", text, "--layouts", "1",
-                                 "--policies", "oracle", "--jobs", "1", "--data", str(tmp_path), "--json"])
-    assert result.exit_code == 0, result.output      # drawn in code: no shared data read
+                                 "--policies", "oracle", "--jobs", "1", "--json"])
+    assert result.exit_code == 0, result.output      # drawn in code: no shared data read, none needed (hostile29)
     data = json.loads(result.stdout)
     assert data["suite"] == "context_held_out" and data["houses"] == "held_out"
     assert set(data["groups"]) - {"all"} == {f"{c['house']} · {text} · start {c['start']}" for c in mine}
     assert data["groups"]["all"]["n"] == len(mine) and data["groups"]["all"]["success"]["oracle"] == 1.0
-    refused = runner.invoke(app, ["bench", "tasks", "--suite", "context_held_out", "--houses", "unseen",
-                                  "--data", str(tmp_path)])
+    refused = runner.invoke(app, ["bench", "tasks", "--suite", "context_held_out", "--houses", "unseen"])
     assert refused.exit_code == 1 and "--houses" in refused.output
