@@ -31,7 +31,7 @@ from seal_cli.bench.reliability_outsider import ALFRED_ROW
 __all__ = ["alfred2d_data", "attacker_cases", "chain_library", "hostile14_cases", "hostile15_cases", "hostile16_cases",
            "hostile17_cases", "hostile18_cases", "hostile19_cases", "hostile20_cases", "hostile21_cases",
            "hostile22_cases", "hostile23_cases", "hostile24_cases", "hostile25_cases", "hostile26_cases",
-           "hostile27_cases", "hostile28_cases", "hostile29_cases", "rgba_png", "robot_map",
+           "hostile27_cases", "hostile28_cases", "hostile29_bag_cases", "hostile29_cases", "rgba_png", "robot_map",
            "sparse_pgm", "split_house"]
 
 DIGITS = "1" * 5_000
@@ -300,6 +300,7 @@ def attacker_cases() -> Iterator[Case]:  # noqa: PLR0915 - one list of cases, re
     yield from hostile27_cases()
     yield from hostile28_cases()
     yield from hostile29_cases()
+    yield from hostile29_bag_cases()
 
 
 def hostile14_cases() -> Iterator[Case]:
@@ -1829,3 +1830,65 @@ def hostile29_cases() -> Iterator[Case]:  # noqa: PLR0915 - one list of cases, r
                says=r"stdin|standard input|-")
     yield Case("A frames --json to a reader that has gone", ("frames", "--json"), codes=(0, 1, 141),
                stream="gone-stdout")
+
+
+def _bag_folder() -> tuple[tuple[str, bytes], ...]:
+    """A ROS 2 sqlite3 bag folder ``x/`` (``metadata.yaml`` and ``out.db3``) of a robot in the apartment, as its
+    files; none without the ros extra."""
+    try:
+        import rosbags  # noqa: F401
+    except ImportError:
+        return ()
+    import tempfile
+    from pathlib import Path
+
+    from seal_cli.bench.ros import write_run
+    from seal_cli.maps.formats.map_server import load_map
+    from seal_cli.resources import map_path
+
+    with tempfile.TemporaryDirectory() as folder:
+        bag = Path(folder) / "run_db3"
+        write_run(bag, load_map(map_path("apartment")), 20, 5, np.random.default_rng(0))
+        return tuple((f"x/{p.name}", p.read_bytes()) for p in sorted(bag.iterdir()))
+
+
+def hostile29_bag_cases() -> Iterator[Case]:
+    """Round hostile29's second batch, a researcher's own ROS 2 bag folder: an output onto its ``metadata.yaml`` or
+    a hard link to its database, and its ``metadata.yaml`` edited by hand (a YAML tag, Latin-1 bytes, 5,000 digits,
+    a syntax error, a file outside the folder), each refused at its line and column; given with a trailing slash,
+    through a link, with CRLF or a BOM, read as it comes."""
+    files = _bag_folder()
+    if not files:
+        return
+    meta = dict(files)["x/metadata.yaml"]
+    db = tuple(f for f in files if f[0] != "x/metadata.yaml")
+    keep = tuple(name for name, _ in files)
+    yield Case("A import-bag -o onto its bag folder's metadata.yaml", ("import-bag", "x", "-o", "x/metadata.yaml"),
+               files, codes=(1,), keep=keep, says=r"--output x/metadata\.yaml would overwrite")
+    yield Case("A import-bag -o onto a hard link to its bag's database", ("import-bag", "x", "-o", "h.yaml"),
+               (*files, ("h.yaml", "hard:x/out.db3")), codes=(1,), keep=(*keep, "h.yaml"), says=r"--output h\.yaml")
+    yield Case("A localize --bag --goals onto the bag folder's metadata.yaml",
+               ("localize", "--map", "apartment", "--bag", "x", "--task", "go to the kitchen", "--steps", "1",
+                "--particles", "20", "--goals", "x/metadata.yaml"), files, codes=(1,), keep=keep,
+               says=r"--goals x/metadata\.yaml")
+    def edited(name: str, text: bytes, says: str) -> Case:
+        return Case(f"A import-bag of a bag folder whose metadata.yaml {name}", ("import-bag", "x", "-o", "o.yaml"),
+                    (("x/metadata.yaml", text), *db), codes=(1,), keep=("x/metadata.yaml", "x/out.db3"),
+                    absent=("o.yaml",), says=says)
+    yield edited("holds a !!python tag", meta.replace(b"ros_distro: rosbags",
+                                                       b'ros_distro: !!python/object/apply:os.system ["true"]'),
+                 r"x/metadata\.yaml:17:15: ")
+    yield edited("ends in Latin-1 bytes", meta + b"# caf\xe9\n", r"x/metadata\.yaml:\d+:\d+: ")
+    yield edited("counts in 5,000 digits", meta.replace(b"  message_count: 26", b"  message_count: " + b"9" * 5000),
+                 r"x/metadata\.yaml:14:18: ")
+    yield edited("is cut inside a list", b"rosbag2_bagfile_information:\n  files: [\n", r"x/metadata\.yaml:\d+:\d+: ")
+    yield edited("lists a file outside the folder", meta.replace(b"  - out.db3", b"  - ../run.mcap"), r"\bx: ")
+    def read(name: str, argv: tuple[str, ...], more: tuple[tuple[str, bytes | str], ...] = (),
+             text: bytes = meta) -> Case:
+        return Case(f"A import-bag of a bag folder {name}", ("import-bag", *argv, "-o", "o.yaml"),
+                    (("x/metadata.yaml", text), *db, *more), codes=(0,), keep=("x/metadata.yaml", "x/out.db3"),
+                    whole=("o.yaml",), says=r"5 observations")
+    yield read("given with a trailing slash", ("x/",))
+    yield read("given through a link", ("y",), (("y", "link:x"),))
+    yield read("whose metadata.yaml has CRLF line ends", ("x",), text=meta.replace(b"\n", b"\r\n"))
+    yield read("whose metadata.yaml starts with a BOM", ("x",), text=b"\xef\xbb\xbf" + meta)
