@@ -20,6 +20,7 @@ from __future__ import annotations
 import atexit
 import contextlib
 import errno
+import itertools
 import os
 import re
 import shutil
@@ -950,7 +951,9 @@ def _is_device(path: Path) -> bool:
 
 
 def _check_distinct(planned: list[tuple[str, Path]], inputs: list[Path], guard_read: bool) -> None:
-    """No output is an input, and no two outputs are one file (by resolved path or by inode)."""
+    """No output is an input, and no two outputs are one file (by resolved path or by inode). An input that is a
+    folder (a ROS 2 bag, a frame library's folder) has its files for inputs too (:func:`_with_files`)."""
+    inputs = list(_with_files(inputs))
     read = {identity: str(path) for path in inputs if (identity := _identity(path)) is not None}
     resolved_inputs = {os.path.realpath(p): str(p) for p in inputs}
     seen: dict[str, str] = {}
@@ -972,6 +975,23 @@ def _check_distinct(planned: list[tuple[str, Path]], inputs: list[Path], guard_r
         seen[real] = option
         if identity:
             seen_ids[identity] = option
+
+
+FOLDER_FILES = 10_000
+"""The most files of an input folder :func:`_with_files` guards (a bag folder holds a few)."""
+
+
+def _with_files(inputs: list[Path]) -> Iterator[Path]:
+    """``inputs``, and the files directly in each that is a folder: ``import-bag x -o x/metadata.yaml`` replaced the
+    ROS 2 bag's own metadata (hostile29), read by rosbags, not by seal, so never guarded as a file seal read."""
+    for path in inputs:
+        yield path
+        with contextlib.suppress(OSError):
+            if path.is_dir():
+                with os.scandir(path) as entries:
+                    for entry in itertools.islice(entries, FOLDER_FILES):
+                        if entry.is_file():
+                            yield Path(entry.path)
 
 
 def _reserve(option: str, target: Path, by_option: bool = True) -> _Output:

@@ -676,3 +676,21 @@ def test_json_nested_too_deeply_is_refused_at_a_column(tmp_path: Path) -> None:
     where = caught.value.where
     assert (where.line, where.column) == (2, 19 + 498)  # the object is level 1; the string's brackets do not count
     assert "nested too deeply" in caught.value.message
+
+
+def test_an_input_folders_files_are_inputs_too(tmp_path: Path) -> None:
+    """A ROS 2 bag is a folder its reader reads file by file: an output onto one of its files, or a hard link to
+    one, would replace it (hostile29); a new file in the folder is no input."""
+    from seal_cli.fileio import Outputs
+
+    bag = tmp_path / "x"
+    bag.mkdir()
+    (bag / "metadata.yaml").write_text("a: 1\n", encoding="utf-8")
+    (tmp_path / "h.yaml").hardlink_to(bag / "metadata.yaml")
+    for target in (bag / "metadata.yaml", tmp_path / "h.yaml"):
+        with pytest.raises(SealError, match=r"would overwrite the input .*metadata\.yaml"):
+            Outputs({"--output": target}, [bag])
+    with Outputs({"--output": bag / "o.yaml"}, [bag]) as outputs:
+        outputs["--output"].write_text("b: 2\n", encoding="utf-8")
+    assert (bag / "o.yaml").read_text(encoding="utf-8") == "b: 2\n"
+    assert (bag / "metadata.yaml").read_text(encoding="utf-8") == "a: 1\n"

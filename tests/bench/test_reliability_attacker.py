@@ -25,6 +25,7 @@ from seal_cli.bench.reliability_attacker import (
     hostile26_cases,
     hostile27_cases,
     hostile28_cases,
+    hostile29_bag_cases,
     hostile29_cases,
     sparse_pgm,
 )
@@ -405,3 +406,14 @@ def test_the_hostile29_cases_are_named_once_and_say_what_they_must() -> None:
     assert all(c.says for c in found if c.codes in ((0,), (1,)))
     assert sum("ROS map" in c.name for c in found) >= 30
     assert {c.name for c in found} <= {c.name for c in attacker_cases()}
+
+
+@pytest.mark.parametrize("name", ["A import-bag -o onto its bag folder's metadata.yaml",
+                                  "A import-bag of a bag folder whose metadata.yaml counts in 5,000 digits",
+                                  "A import-bag of a bag folder whose metadata.yaml starts with a BOM"])
+def test_picked_hostile29_bag_cases_end_cleanly(name: str, monkeypatch: pytest.MonkeyPatch) -> None:
+    """The first replaced the bag's metadata, the second said a Python limit naming no line; the third is read."""
+    pytest.importorskip("rosbags")
+    monkeypatch.setenv("PYTHONPATH", str(Path(__file__).resolve().parents[2]))
+    case = next(c for c in hostile29_bag_cases() if c.name == name)
+    assert run_case(case).problems == []
