@@ -326,7 +326,7 @@ def hostile14_cases() -> Iterator[Case]:
                ("bench", "parse", "--corpus", "g.jsonl", "--corpus", "c.tsv", "--constants", "k.json"),
                (("g.jsonl", b'{"text": "stir the cup", "expect": [{"frame": "Stir"}]}\n'), ("c.tsv", ALFRED_ROW),
                 ("k.json", b"[" * 100_000 + b"]" * 100_000)), codes=(1,),
-               says=r"\A(?![\s\S]*scoring)[\s\S]*k\.json: .*nested too deeply")
+               says=r"\A(?![\s\S]*scoring)[\s\S]*k\.json(:1:\d+)?: .*nested too deeply")
     known = np.full((5_000, 5_000), 254, dtype=np.uint8)  # a fully known image: free, walls round it and across
     known[[0, -1], :] = known[:, [0, -1]] = known[:, 2_500] = 0
     known[2_400:2_600, 2_500] = 254
