@@ -31,7 +31,8 @@ from seal_cli.bench.reliability_outsider import ALFRED_ROW
 __all__ = ["alfred2d_data", "attacker_cases", "chain_library", "hostile14_cases", "hostile15_cases", "hostile16_cases",
            "hostile17_cases", "hostile18_cases", "hostile19_cases", "hostile20_cases", "hostile21_cases",
            "hostile22_cases", "hostile23_cases", "hostile24_cases", "hostile25_cases", "hostile26_cases",
-           "hostile27_cases", "hostile28_cases", "hostile29_bag_cases", "hostile29_cases", "rgba_png", "robot_map",
+           "hostile27_cases", "hostile28_cases", "hostile29_bag_cases", "hostile29_cases",
+           "hostile29_environment_cases", "rgba_png", "robot_map",
            "sparse_pgm", "split_house"]
 
 DIGITS = "1" * 5_000
@@ -301,6 +302,7 @@ def attacker_cases() -> Iterator[Case]:  # noqa: PLR0915 - one list of cases, re
     yield from hostile28_cases()
     yield from hostile29_cases()
     yield from hostile29_bag_cases()
+    yield from hostile29_environment_cases()
 
 
 def hostile14_cases() -> Iterator[Case]:
@@ -1892,3 +1894,51 @@ def hostile29_bag_cases() -> Iterator[Case]:
     yield read("given through a link", ("y",), (("y", "link:x"),))
     yield read("whose metadata.yaml has CRLF line ends", ("x",), text=meta.replace(b"\n", b"\r\n"))
     yield read("whose metadata.yaml starts with a BOM", ("x",), text=b"\xef\xbb\xbf" + meta)
+
+
+def hostile29_environment_cases() -> Iterator[Case]:
+    """Round hostile29's third batch, the environment a command starts in: seal's cache folder a device, a file, a link
+    loop or the map itself; ``XDG_CACHE_HOME`` a file; ``HOME`` empty or missing; matplotlib's ``MPLCONFIGDIR`` a
+    file or a device (matplotlib then rebuilt its font cache in a temporary folder each run, 30 s, and said so in two
+    lines of its own); ``TMPDIR`` a file or missing; ``COLUMNS`` 0, negative, a word, 1; ``PYTHONIOENCODING`` ascii
+    and latin-1; ``LC_ALL=C`` with an accented map name; ``--jobs 64`` for one task."""
+    parse = ("parse", "go to the café")
+    for name, value, files in (("a device", "/dev/null", ()), ("a file", "f", (("f", b"x"),)),
+                               ("a link to itself", "l", (("l", "link:l"),))):
+        yield Case(f"A parse with SEAL_CACHE_DIR {name}", parse, files, codes=(0,), env=(("SEAL_CACHE_DIR", value),),
+                   keep=tuple(n for n, c in files if isinstance(c, bytes)), says=r"Go\b")
+    small = b"name: m\nbounds: [0, 0, 10, 10]\nrooms:\n  - {name: hall, box: [0, 0, 10, 10]}\n"
+    yield Case("A map with SEAL_CACHE_DIR the map itself", ("map", "m.yaml"), (("m.yaml", small),), codes=(0,),
+               env=(("SEAL_CACHE_DIR", "m.yaml"),), keep=("m.yaml",), says=r"(?s).")
+    yield Case("A parse with XDG_CACHE_HOME a file", parse, (("f", b"x"),), codes=(0,),
+               env=(("XDG_CACHE_HOME", "f"), ("SEAL_CACHE_DIR", "<unset>")), keep=("f",), says=r"Go\b")
+    for name, value in (("empty", ""), ("a folder that does not exist", "/nonexistent/home")):
+        yield Case(f"A parse with HOME {name}", parse, codes=(0,),
+                   env=(("HOME", value), ("XDG_CACHE_HOME", "<unset>"), ("SEAL_CACHE_DIR", "<unset>")), says=r"Go\b")
+    drive = ("run", "go to the kitchen", "--map", "apartment", "--particles", "20", "--png", "o.png")
+    for name, value, files in (("a file", "f", (("f", b"x"),)), ("a device", "/dev/null", ())):
+        yield Case(f"A run --png with MPLCONFIGDIR {name}", drive, files, codes=(0,),
+                   env=(("MPLCONFIGDIR", value), ("PYTHONWARNINGS", "<unset>")), whole=("o.png",),
+                   keep=tuple(n for n, c in files if isinstance(c, bytes)),
+                   says=rf"warning: MPLCONFIGDIR {value} is not a folder", unsaid=r"Matplotlib created|mkdir -p")
+    corpus = b'{"text": "go to the kitchen", "expect": [{"frame": "Go", "elements": {"goal": "kitchen"}}]}\n'
+    yield Case("A bench parse with TMPDIR a file", ("bench", "parse", "--corpus", "c.jsonl"),
+               (("c.jsonl", corpus), ("t", b"x")), codes=(0,), env=(("TMPDIR", "t"),), keep=("c.jsonl", "t"),
+               says=r"frames 1\.000", timeout=120)
+    yield Case("A run --png with TMPDIR missing", drive, codes=(0,), env=(("TMPDIR", "/nonexistent"),),
+               whole=("o.png",), says=r"done: Go")
+    for columns in ("0", "-5", "abc", "1"):
+        yield Case(f"A plan with COLUMNS={columns}", ("plan", "go to the kitchen", "--map", "apartment"), codes=(0,),
+                   env=(("COLUMNS", columns),), says=r"Go")
+    yield Case("A parse with PYTHONIOENCODING=ascii:strict of a snowman", ("parse", "go to the \u2603 now"),
+               codes=(1,), env=(("PYTHONIOENCODING", "ascii:strict"),), says=r"column 11: .*U\+2603")
+    yield Case("A run with PYTHONIOENCODING=latin-1 of a word the map lacks", ("run", "go to the café", "--map",
+                                                                               "apartment", "--particles", "20"),
+               codes=(1,), env=(("PYTHONIOENCODING", "latin-1"),), says=r"column 7: the apartment has no caf")
+    yield Case("A validate with LC_ALL=C of a map named café", ("validate", "m.yaml"),
+               (("m.yaml", small.replace(b"name: m", "name: café".encode())),), codes=(0,),
+               env=(("LC_ALL", "C"), ("LANG", "C"), ("PYTHONUTF8", "0")), keep=("m.yaml",), says=r"ok: ")
+    yield Case("A bench tasks --jobs 64 for one task", ("bench", "tasks", "--suite", "map", "--map", "studio",
+                                                          "--command", "go to the sofa", "--layouts", "1",
+                                                          "--policies", "oracle", "--particles", "20", "--jobs", "64"),
+               codes=(0,), says=r"(?s).", timeout=120)
