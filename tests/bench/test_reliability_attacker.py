@@ -27,6 +27,7 @@ from seal_cli.bench.reliability_attacker import (
     hostile28_cases,
     hostile29_bag_cases,
     hostile29_cases,
+    hostile29_environment_cases,
     sparse_pgm,
 )
 from seal_cli.bench.reliability_outsider import outsider_cases
@@ -417,3 +418,10 @@ def test_picked_hostile29_bag_cases_end_cleanly(name: str, monkeypatch: pytest.M
     monkeypatch.setenv("PYTHONPATH", str(Path(__file__).resolve().parents[2]))
     case = next(c for c in hostile29_bag_cases() if c.name == name)
     assert run_case(case).problems == []
+
+
+def test_the_hostile29_environment_cases_are_named_once_and_say_what_they_must() -> None:
+    found = list(hostile29_environment_cases())
+    assert len({c.name for c in found}) == len(found) >= 19 and all(c.env for c in found if "--jobs" not in c.name)
+    assert all(c.says for c in found if c.codes in ((0,), (1,)))
+    assert {c.name for c in found} <= {c.name for c in attacker_cases()}
