@@ -22,7 +22,9 @@ exit code 130, no traceback; one after the command has finished (its outputs in 
 own exit code, and one while the interpreter shuts down is ignored. Standard streams whose encoding cannot
 hold every character (``PYTHONIOENCODING=ascii``, a Latin-1 terminal) are set up first
 (:func:`seal_cli.cli.output.printable_streams`), and a screen size no one can draw (``COLUMNS`` of a billion,
-``TERMINAL_WIDTH=abc``) is bounded or dropped (:func:`seal_cli.cli.output.sane_sizes`).
+``TERMINAL_WIDTH=abc``) is bounded or dropped (:func:`seal_cli.cli.output.sane_sizes`), and a matplotlib cache
+folder that is none (``MPLCONFIGDIR=/dev/null``) replaced by seal's, with a warning
+(:func:`seal_cli.cli.output.plot_cache`).
 """
 
 from __future__ import annotations
@@ -38,13 +40,16 @@ def main() -> None:
     enabled = gc.isenabled()
     gc.disable()
     try:
-        from seal_cli.cli.output import printable_streams, sane_sizes, whole_writes
+        from seal_cli.cli.output import plot_cache, printable_streams, sane_sizes, whole_writes
         from seal_cli.fileio import note_interrupts
 
         note_interrupts()
         whole_writes()
         printable_streams()
         sane_sizes()
+        said = plot_cache()
+        if said:
+            sys.stderr.write(f"warning: {said}\n")
         from seal_cli.cli import main as run
         from seal_cli.cli import plain_parse
 

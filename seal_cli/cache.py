@@ -28,6 +28,7 @@ from pathlib import Path
 from typing import TYPE_CHECKING
 
 if TYPE_CHECKING:
+    from collections.abc import Mapping
     from typing import BinaryIO
 
 __all__ = ["digest", "folder", "read", "read_mapped", "write"]
@@ -36,14 +37,14 @@ MAGIC = b"seal-cache 2 "
 """The start of every entry's header (the number is the format's version)."""
 
 
-def folder() -> Path | None:
+def folder(environ: Mapping[str, str] = os.environ) -> Path | None:
     """The cache folder, or None when the cache is turned off (``SEAL_NO_CACHE`` set and not ``0``)."""
-    if os.environ.get("SEAL_NO_CACHE", "0") not in ("", "0"):
+    if environ.get("SEAL_NO_CACHE", "0") not in ("", "0"):
         return None
-    chosen = os.environ.get("SEAL_CACHE_DIR")
+    chosen = environ.get("SEAL_CACHE_DIR")
     if chosen:
         return Path(chosen)
-    base = os.environ.get("XDG_CACHE_HOME") or os.path.join(os.path.expanduser("~"), ".cache")
+    base = environ.get("XDG_CACHE_HOME") or os.path.join(os.path.expanduser("~"), ".cache")
     return Path(base) / "seal"
 
 

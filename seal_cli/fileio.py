@@ -20,6 +20,7 @@ from __future__ import annotations
 import atexit
 import contextlib
 import errno
+import itertools
 import os
 import re
 import shutil
@@ -39,9 +40,9 @@ if TYPE_CHECKING:
 
 __all__ = ["LOADER", "MAX_IMAGE_BYTES", "MAX_INPUT_BYTES", "YAML_BREAKS", "Outputs", "atomic_output",
            "atomic_write_text", "clean_up_on_signals", "compose_documents", "compose_yaml", "decode", "interrupted",
-           "note_interrupts", "open_regular", "read_bytes", "read_json", "read_json_lines", "read_text", "read_yaml",
-           "remove_temporaries", "shown_path", "signals_wait", "split_lines", "stdin_hint", "stream_lines", "typed",
-           "work_folder", "yaml_problem"]
+           "json_value", "note_interrupts", "open_regular", "read_bytes", "read_json", "read_json_lines", "read_text",
+           "read_yaml", "remove_temporaries", "shown_path", "signals_wait", "split_lines", "stdin_hint", "stream_lines",
+           "typed", "work_folder", "yaml_problem"]
 
 if TYPE_CHECKING:
     LOADER: type[yaml.SafeLoader]
@@ -422,6 +423,54 @@ def _halves(value: Any) -> bool:
     return False
 
 
+_LONG_NUMBER = re.compile(rf"-?\d{{{MAX_INT_DIGITS + 1},}}")
+DEEPEST_SHOWN = 500
+"""How deep a JSON value's nesting is where :func:`json_value` points, once Python's reader found it too deep."""
+
+
+def json_value(text: str, path: str | Path, line: int = 1) -> Any:
+    """The JSON value of ``text`` (a file's, or its line ``line``'s) with no half characters
+    (:func:`check_whole_characters`); an integer of more than :data:`MAX_INT_DIGITS` digits (Python's reader
+    raised a bare ValueError: a traceback from ``bench parse --corpus`` and every JSON reader, hostile29) or nesting
+    deeper than Python's reader goes is a SealError at its line and column. Not JSON at all: ``json.JSONDecodeError``,
+    which each reader words as its own."""
+    import json
+
+    try:
+        return check_whole_characters(json.loads(text), text, path, line)
+    except json.JSONDecodeError:
+        raise
+    except RecursionError:
+        at = _depth_reached(text, DEEPEST_SHOWN)
+        message = f"this value is nested too deeply for seal to read ({DEEPEST_SHOWN} levels deep here, and deeper)"
+    except ValueError:
+        found = _LONG_NUMBER.search(text)
+        at = found.start() if found else 0
+        digits = len(found.group().lstrip("-")) if found else 0
+        message = f"an integer of {digits:,} digits is more than seal reads ({MAX_INT_DIGITS:,} digits at most)"
+    before = text.rfind("\n", 0, at)
+    shown = text[before + 1:].split("\n", 1)[0]
+    raise SealError(message, Where(str(path), line + text.count("\n", 0, at), at - before),
+                    source_line=shown if len(shown) <= 200 else None) from None
+
+
+def _depth_reached(text: str, depth: int) -> int:
+    """Where the nesting of a JSON text's arrays and objects first reaches ``depth`` (strings skipped)."""
+    level, inside, escaped = 0, False, False
+    for at, c in enumerate(text):
+        if inside:
+            escaped, inside = (False, True) if escaped else (c == "\\", c != '"')
+        elif c == '"':
+            inside = True
+        elif c in "[{":
+            level += 1
+            if level >= depth:
+                return at
+        elif c in "]}":
+            level -= 1
+    return 0
+
+
 def check_whole_characters(value: Any, text: str, path: str | Path, line: int = 1) -> Any:
     """``value``, decoded from the JSON ``text``, or a SealError at the escape that is half a character: Python's
     ``json`` decodes ``"\\ud800"`` to a lone surrogate, which no UTF-8 can hold, so the first write of it (a
@@ -444,14 +493,12 @@ def read_json(path: str | Path, what: str = "JSON file") -> Any:
 
     text = read_text(path)
     try:
-        return check_whole_characters(json.loads(text), text, path)
+        return json_value(text, path)
     except json.JSONDecodeError as exc:
         lines = text.split("\n")
         source = lines[exc.lineno - 1] if exc.lineno <= len(lines) else None
         raise SealError(f"this {what} is not JSON: {exc.msg}", Where(str(path), exc.lineno, exc.colno),
                         source_line=source) from None
-    except RecursionError:
-        raise SealError(f"this {what} is nested too deeply for seal to read", Where(str(path))) from None
 
 
 def stream_lines(path: str | Path, what: str = "file") -> Iterator[tuple[int, str]]:
@@ -493,11 +540,9 @@ def read_json_lines(path: str | Path) -> list[Any]:
         if not line.strip():
             continue
         try:
-            values.append(check_whole_characters(json.loads(line), line, path, number))
+            values.append(json_value(line, path, number))
         except json.JSONDecodeError as exc:
             raise SealError(f"not JSON: {exc.msg}", Where(str(path), number, exc.colno), source_line=line) from None
-        except RecursionError:
-            raise SealError("not JSON seal can read: nested too deeply", Where(str(path), number)) from None
     return values
 
 
@@ -906,7 +951,9 @@ def _is_device(path: Path) -> bool:
 
 
 def _check_distinct(planned: list[tuple[str, Path]], inputs: list[Path], guard_read: bool) -> None:
-    """No output is an input, and no two outputs are one file (by resolved path or by inode)."""
+    """No output is an input, and no two outputs are one file (by resolved path or by inode). An input that is a
+    folder (a ROS 2 bag, a frame library's folder) has its files for inputs too (:func:`_with_files`)."""
+    inputs = list(_with_files(inputs))
     read = {identity: str(path) for path in inputs if (identity := _identity(path)) is not None}
     resolved_inputs = {os.path.realpath(p): str(p) for p in inputs}
     seen: dict[str, str] = {}
@@ -928,6 +975,23 @@ def _check_distinct(planned: list[tuple[str, Path]], inputs: list[Path], guard_r
         seen[real] = option
         if identity:
             seen_ids[identity] = option
+
+
+FOLDER_FILES = 10_000
+"""The most files of an input folder :func:`_with_files` guards (a bag folder holds a few)."""
+
+
+def _with_files(inputs: list[Path]) -> Iterator[Path]:
+    """``inputs``, and the files directly in each that is a folder: ``import-bag x -o x/metadata.yaml`` replaced the
+    ROS 2 bag's own metadata (hostile29), read by rosbags, not by seal, so never guarded as a file seal read."""
+    for path in inputs:
+        yield path
+        with contextlib.suppress(OSError):
+            if path.is_dir():
+                with os.scandir(path) as entries:
+                    for entry in itertools.islice(entries, FOLDER_FILES):
+                        if entry.is_file():
+                            yield Path(entry.path)
 
 
 def _reserve(option: str, target: Path, by_option: bool = True) -> _Output:

@@ -27,14 +27,23 @@ NULL = "tag:yaml.org,2002:null"
 MERGE = "tag:yaml.org,2002:merge"
 
 
+CORE = "tag:yaml.org,2002:"
+READ_TAGS = frozenset(CORE + name for name in ("null", "bool", "int", "float", "str", "timestamp", "merge", "seq",
+                                               "map"))
+"""The tags a composed file's nodes may carry: the ones YAML gives a plain value itself. Any other was written in the
+file (``!!binary``, ``!!set``, ``!!python/object/apply:...``, a local ``!mine``) and asks for a reading seal's
+readers do not give: refused at its node (hostile29: each was passed over, ``name: !!binary bGFi`` read as the text
+``bGFi``)."""
+
 MAX_VALUES = 1_000_000
 """The most values a YAML file may hold once its aliases are expanded (``*anchor`` repeats the
 whole anchored value): a file that expands beyond is refused before it is read."""
 
 
 def check_size(root: yaml.Node | None, file: str, limit: int = MAX_VALUES) -> None:
-    """Refuse a composed file whose values, aliases expanded, number more than ``limit``; linear
-    in the distinct nodes (each anchored node's expanded size is counted once and reused)."""
+    """Refuse a composed file whose values, aliases expanded, number more than ``limit``, or that holds a tag of
+    none of :data:`READ_TAGS`; linear in the distinct nodes (each anchored node's expanded size is counted once and
+    reused)."""
     if root is None:
         return
     sizes: dict[int, int] = {}
@@ -51,6 +60,9 @@ def check_size(root: yaml.Node | None, file: str, limit: int = MAX_VALUES) -> No
         if id(node) in open_:
             raise SealError("an alias (*name) refers to a value that holds it: the value would be endless",
                             Where(file, node.start_mark.line + 1, node.start_mark.column + 1))
+        if node.tag not in READ_TAGS:
+            raise SealError(f"the tag {_tag(node.tag)} asks for a value seal does not read: leave the tag out",
+                            Where(file, node.start_mark.line + 1, node.start_mark.column + 1))
         open_.add(id(node))
         stack.append((node, True))
         stack.extend((child, False) for child in _children(node))
@@ -59,6 +71,12 @@ def check_size(root: yaml.Node | None, file: str, limit: int = MAX_VALUES) -> No
         raise SealError(f"this file holds more than {limit:,} values once its aliases (*name) are expanded; "
                         "seal reads at most that many",
                         Where(file, past.start_mark.line + 1, past.start_mark.column + 1))
+
+
+def _tag(tag: str) -> str:
+    """A tag as it is written: ``!!binary`` for YAML's own, ``!mine`` for a local one, clipped."""
+    return clipped("!!" + tag.removeprefix(CORE) if tag.startswith(CORE) else tag if tag.startswith("!") else
+                   f"!<{tag}>")
 
 
 def _past_bound(root: yaml.Node, sizes: dict[int, int], limit: int) -> yaml.Node:

@@ -11,7 +11,16 @@ from pathlib import Path
 import pytest
 
 from seal_cli.errors import SealError
-from seal_cli.fileio import atomic_output, atomic_write_text, read_text, read_yaml, typed
+from seal_cli.fileio import (
+    atomic_output,
+    atomic_write_text,
+    json_value,
+    read_json,
+    read_json_lines,
+    read_text,
+    read_yaml,
+    typed,
+)
 
 
 def test_written_files_get_the_usual_mode(tmp_path: Path) -> None:
@@ -643,3 +652,45 @@ def test_a_stop_whose_exit_was_dropped_still_writes_nothing(tmp_path: Path, monk
     with pytest.raises(SystemExit) as ended, fileio.Outputs({"--png": tmp_path / "o.png"}) as plan:
         plan["--png"].write_bytes(b"x")
     assert ended.value.code == 143 and list(tmp_path.iterdir()) == []
+
+
+def test_json_of_5000_digits_is_refused_at_the_number(tmp_path: Path) -> None:
+    """Python's reader raised a bare ValueError (a traceback from bench parse --corpus and --constants, hostile29)."""
+    with pytest.raises(SealError) as caught:
+        json_value('{"a": [1,\n 2, -' + "9" * 5000 + "]}", "k.json", line=3)
+    assert (caught.value.where.line, caught.value.where.column) == (4, 5)
+    assert "an integer of 5,000 digits is more than seal reads" in caught.value.message
+    path = tmp_path / "k.json"
+    path.write_text('{"n": ' + "1" * 4301 + "}", encoding="utf-8")
+    with pytest.raises(SealError, match=r"k\.json:1:7: an integer of 4,301 digits"):
+        read_json(path)
+    path.write_text('{"n": ' + "1" * 4300 + "}", encoding="utf-8")
+    assert read_json(path)["n"] == int("1" * 4300)
+
+
+def test_json_nested_too_deeply_is_refused_at_a_column(tmp_path: Path) -> None:
+    path = tmp_path / "c.jsonl"
+    path.write_text('{"ok": 1}\n{"s": "[[[", "a": ' + "[" * 100_000 + "]" * 100_000 + "}\n", encoding="utf-8")
+    with pytest.raises(SealError) as caught:
+        read_json_lines(path)
+    where = caught.value.where
+    assert (where.line, where.column) == (2, 19 + 498)  # the object is level 1; the string's brackets do not count
+    assert "nested too deeply" in caught.value.message
+
+
+def test_an_input_folders_files_are_inputs_too(tmp_path: Path) -> None:
+    """A ROS 2 bag is a folder its reader reads file by file: an output onto one of its files, or a hard link to
+    one, would replace it (hostile29); a new file in the folder is no input."""
+    from seal_cli.fileio import Outputs
+
+    bag = tmp_path / "x"
+    bag.mkdir()
+    (bag / "metadata.yaml").write_text("a: 1\n", encoding="utf-8")
+    (tmp_path / "h.yaml").hardlink_to(bag / "metadata.yaml")
+    for target in (bag / "metadata.yaml", tmp_path / "h.yaml"):
+        with pytest.raises(SealError, match=r"would overwrite the input .*metadata\.yaml"):
+            Outputs({"--output": target}, [bag])
+    with Outputs({"--output": bag / "o.yaml"}, [bag]) as outputs:
+        outputs["--output"].write_text("b: 2\n", encoding="utf-8")
+    assert (bag / "o.yaml").read_text(encoding="utf-8") == "b: 2\n"
+    assert (bag / "metadata.yaml").read_text(encoding="utf-8") == "a: 1\n"

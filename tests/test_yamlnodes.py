@@ -7,7 +7,7 @@ import yaml
 
 from seal_cli.errors import SealError, Where
 from seal_cli.fileio import LOADER
-from seal_cli.yamlnodes import NodeReader, is_null, shape, suggest
+from seal_cli.yamlnodes import NodeReader, check_size, is_null, shape, suggest
 
 TEXT = "name: kitchen\nitems: [a, b]\nempty:\nbox: {x: 1, x: 2, colour: red}\n"
 
@@ -145,3 +145,24 @@ def test_a_file_too_large_once_expanded_is_refused_where_it_passes_the_bound() -
     with pytest.raises(SealError) as caught:
         check_size(yaml.compose("x: [" + ", ".join("1" * 30) + "]\n", Loader=LOADER), "f.yaml", 20)
     assert caught.value.where.line == 1 and caught.value.where.column is not None
+
+
+@pytest.mark.parametrize(("text", "where", "tag"), [
+    ("name: !!binary bGFi\n", (1, 7), "!!binary"),
+    ("rooms: !!python/object/apply:os.system\n  - a\n", (1, 8), "!!python/object/apply:os.system"),
+    ("a: [1, !mine b]\n", (1, 8), "!mine"),
+    ("a: !!set {x}\n", (1, 4), "!!set"),
+    ("a: !!omap [{x: 1}]\n", (1, 4), "!!omap"),
+    ("a: !<tag:example.com,2000:x> b\n", (1, 4), "!<tag:example.com,2000:x>"),
+])
+def test_a_tag_seal_does_not_read_is_refused_at_its_node(text: str, where: tuple[int, int], tag: str) -> None:
+    """Each was passed over (hostile29): ``name: !!binary bGFi`` named the map ``bGFi``."""
+    with pytest.raises(SealError) as caught:
+        check_size(yaml.compose(text, Loader=LOADER), "f.yaml")
+    assert (caught.value.where.line, caught.value.where.column) == where
+    assert f"the tag {tag} asks for a value seal does not read" in caught.value.message
+
+
+def test_the_tags_yaml_gives_plain_values_are_read() -> None:
+    text = "a: [1, 2.5, true, ~, x, 2001-12-14, !!str 10, !!int 3]\nb: &b {c: 1}\nd:\n  <<: *b\n"
+    check_size(yaml.compose(text, Loader=LOADER), "f.yaml")

@@ -248,7 +248,7 @@ def _floor_plan(name: str, fp: Value) -> FloorPlan:
 def read_trials(data_dir: str | Path, split: str, floor_plans: Mapping[str, FloorPlan]) -> Iterator[Episode]:
     """The episodes of ``trials_<split>.jsonl``, in file order; a trial with a value of the wrong type is a
     SealError at its line, naming the value's path (``trial.objects[2].position``)."""
-    from seal_cli.fileio import check_whole_characters, stream_lines
+    from seal_cli.fileio import json_value, stream_lines
     from seal_cli.jsonvalues import Value
 
     path = Path(data_dir) / f"trials_{split}.jsonl"
@@ -259,12 +259,10 @@ def read_trials(data_dir: str | Path, split: str, floor_plans: Mapping[str, Floo
         if not line.strip():
             continue
         try:
-            trial = check_whole_characters(json.loads(line), line, path, number)  # a lone surrogate (hostile28)
+            trial = json_value(line, path, number)  # a lone surrogate (hostile28), 5,000 digits (hostile29)
         except json.JSONDecodeError as exc:
             raise SealError(f"trial is not JSON: {exc.msg}", Where(str(path), number, exc.colno),
                             source_line=line) from None
-        except RecursionError:
-            raise SealError("trial is nested too deeply for seal to read", _where(path, number)) from None
         yield _episode(Value(trial, "trial", _where(path, number)), floor_plans)
 
 

@@ -32,7 +32,7 @@ from pathlib import Path
 from typing import Any
 
 from seal_cli.errors import SealError, Where
-from seal_cli.fileio import check_whole_characters, read_text, split_lines
+from seal_cli.fileio import json_value, read_text, split_lines
 
 __all__ = ["ALFRED_COLUMNS", "Corpus", "read_corpus", "write_plain"]
 
@@ -87,11 +87,9 @@ def _read_lines(path: Path) -> Corpus:
         if not line.strip():
             continue
         try:
-            item = check_whole_characters(json.loads(line), line, path, number)
+            item = json_value(line, path, number)
         except json.JSONDecodeError as exc:
             raise SealError(f"not JSON: {exc.msg}", Where(str(path), number, exc.colno), source_line=line) from None
-        except RecursionError:
-            raise SealError("not JSON seal can read: nested too deeply", Where(str(path), number)) from None
         if not isinstance(item, dict):
             raise SealError(f"this line is {_kind(item)}, not a JSON object: each line of a corpus is one command, "
                             '{"text": ..., "expect": [...]} or a GPSR command with its command_types and fills',

@@ -31,7 +31,9 @@ from seal_cli.bench.reliability_outsider import ALFRED_ROW
 __all__ = ["alfred2d_data", "attacker_cases", "chain_library", "hostile14_cases", "hostile15_cases", "hostile16_cases",
            "hostile17_cases", "hostile18_cases", "hostile19_cases", "hostile20_cases", "hostile21_cases",
            "hostile22_cases", "hostile23_cases", "hostile24_cases", "hostile25_cases", "hostile26_cases",
-           "hostile27_cases", "hostile28_cases", "rgba_png", "sparse_pgm", "split_house"]
+           "hostile27_cases", "hostile28_cases", "hostile29_bag_cases", "hostile29_cases",
+           "hostile29_environment_cases", "rgba_png", "robot_map",
+           "sparse_pgm", "split_house"]
 
 DIGITS = "1" * 5_000
 """An integer longer than Python converts from text (4,300 digits)."""
@@ -298,6 +300,9 @@ def attacker_cases() -> Iterator[Case]:  # noqa: PLR0915 - one list of cases, re
     yield from hostile26_cases()
     yield from hostile27_cases()
     yield from hostile28_cases()
+    yield from hostile29_cases()
+    yield from hostile29_bag_cases()
+    yield from hostile29_environment_cases()
 
 
 def hostile14_cases() -> Iterator[Case]:
@@ -323,7 +328,7 @@ def hostile14_cases() -> Iterator[Case]:
                ("bench", "parse", "--corpus", "g.jsonl", "--corpus", "c.tsv", "--constants", "k.json"),
                (("g.jsonl", b'{"text": "stir the cup", "expect": [{"frame": "Stir"}]}\n'), ("c.tsv", ALFRED_ROW),
                 ("k.json", b"[" * 100_000 + b"]" * 100_000)), codes=(1,),
-               says=r"\A(?![\s\S]*scoring)[\s\S]*k\.json: .*nested too deeply")
+               says=r"\A(?![\s\S]*scoring)[\s\S]*k\.json(:1:\d+)?: .*nested too deeply")
     known = np.full((5_000, 5_000), 254, dtype=np.uint8)  # a fully known image: free, walls round it and across
     known[[0, -1], :] = known[:, [0, -1]] = known[:, 2_500] = 0
     known[2_400:2_600, 2_500] = 254
@@ -1625,3 +1630,315 @@ def hostile28_cases() -> Iterator[Case]:  # noqa: PLR0915 - one list of cases, r
                ("run", "go to the sofa", "--map", "studio", "--particles", "20", "--vocabulary", "v.yaml"),
                (("v.yaml", b'- {class: mug, synonyms: ["be\\u202eaker"]}\n'),), codes=(1,), keep=("v.yaml",),
                says=r"v\.yaml:1:\d+: ")
+
+
+def robot_map(rooms: str = "") -> tuple[tuple[str, bytes], tuple[str, bytes]]:
+    """A researcher's own ROS map as ``map_saver`` writes it (its six lines, six decimal places, a trinary P5 image of
+    a 10 m × 10 m house at 5 cm: walls 0, free 254, unknown 205 around it, a wall between two rooms with a door), the
+    rooms added by hand below its lines (``rooms``: the whole ``rooms:`` block; default a kitchen and a hall)."""
+    cells = np.full((200, 200), 205, dtype=np.uint8)
+    cells[20:180, 20:180] = 254
+    cells[20:180, [20, 179]] = 0
+    cells[[20, 179], 20:180] = 0
+    cells[20:180, 100] = 0
+    cells[90:110, 100] = 254  # the door
+    image = b"P5\n200 200\n255\n" + cells.tobytes()
+    head = (b"image: map.pgm\nmode: trinary\nresolution: 0.050000\norigin: [-5.000000, -5.000000, 0.000000]\n"
+            b"negate: 0\noccupied_thresh: 0.65\nfree_thresh: 0.25\n\n")
+    added = rooms or ("name: lab\nrooms:\n  - {name: kitchen, box: [-3.9, -3.9, -0.1, 3.9]}\n"
+                      "  - {name: hall, box: [0.1, -3.9, 3.9, 3.9]}\nplaces:\n"
+                      "  - {name: table_1, class: table, at: [-2, 0]}\nrobot: {pose: [2, 0, 0]}\n")
+    return ("m.yaml", head + added.encode()), ("map.pgm", image)
+
+
+def hostile29_cases() -> Iterator[Case]:  # noqa: PLR0915 - one list of cases, read top to bottom
+    """Round hostile29: ``--done`` given many times, contradicting itself, unparseable, naming another map's things;
+    ``bench tasks --suite context_held_out`` with options it reads and does not read, an output onto a device, a
+    SIGINT; ``bench parse --corpus`` of a folder, a FIFO, a link loop, nothing, binary bytes, deep nesting, 5,000
+    digits; ``run --png/--rrd`` onto a folder, a FIFO, a link loop, one path twice, a link to the map's image; a
+    researcher's own ROS map (``map_saver``'s lines and a P5 image, rooms added by hand) read as it comes (CRLF, a
+    BOM, an image name with a space or ``..``) and broken (tabs, Latin-1, repeated keys, thresholds crossed, 400
+    digits, YAML tags, an image that is a device, a FIFO, itself, a folder, a loop, empty, a PGM lying about its size
+    or holding signs, fractions and NaN); frame files with a BOM and CRLF, Latin-1, tags; odd ``--jobs``; HOME unset;
+    a closed stdin; a reader gone from stdout."""
+    studio = ("--map", "studio")
+    sofa = ("run", "go to the sofa", *studio, "--particles", "20")
+    # -- --done ------------------------------------------------------------------------------------------------------
+    many = [a for _ in range(100) for a in ("--done", "go to the bed")]
+    yield Case("A run with --done given 100 times", (*sofa, *many), codes=(0,), says=r"done: Go")
+    yield Case("A run whose --done open then close the fridge", ("run", "open the fridge", "--map", "apartment",
+                                                                 "--particles", "20", "--done", "open the fridge",
+                                                                 "--done", "close the fridge"),
+               codes=(0,), says=r"done: Open\(theme=fridge_1\)")
+    yield Case("A run whose --done is no command", (*sofa, "--done", "qwzx blorp"), codes=(1,),
+               says=r"column 1: in --done 'qwzx blorp'")
+    yield Case("A run whose --done names another map's thing", (*sofa, "--done", "open the locker"), codes=(1,),
+               says=r"in --done 'open the locker': the studio has no locker")
+    yield Case("A run whose --done names another map's room", (*sofa, "--done", "go to the galley"), codes=(1,),
+               says=r"in --done 'go to the galley'")
+    yield Case("A run whose --done is a negation", (*sofa, "--done", "don't open the fridge"), codes=(1,),
+               says=r"in --done")
+    yield Case("A localize whose second --done is no command",
+               ("localize", *studio, "--steps", "1", "--particles", "20", "--task", "go to the sofa", "--done",
+                "go to the bed", "--done", "qwzx"), codes=(1,), says=r"in --done 'qwzx'")
+    # -- bench tasks --suite context_held_out ------------------------------------------------------------------------
+    held = ("bench", "tasks", "--suite", "context_held_out", "--policies", "oracle", "--particles", "20", "--jobs", "1")
+    mug = (*held, "--command", "stir the mug", "--layouts", "1")
+    yield Case("A bench tasks --suite context_held_out --data /dev/null", (*held, "--data", "/dev/null"), codes=(1,),
+               says=r"--suite context_held_out does not read --data")
+    yield Case("A bench tasks --suite context_held_out --fov nan", (*held, "--fov", "nan"), codes=(1,), says=r"--fov")
+    yield Case("A bench tasks --suite context_held_out --starts 2", (*held, "--starts", "2"), codes=(1,),
+               says=r"does not read --starts")
+    yield Case("A bench tasks --suite context_held_out --command none of its cases has",
+               (*held, "--command", "go to the kitchen"), codes=(1,), says=r"--command 'go to the kitchen'")
+    yield Case("A bench tasks --suite context_held_out --framelib of a broken frame", (*mug, "--framelib", "b.frame"),
+               (("b.frame", b"frame {\n"),), codes=(1,), keep=("b.frame",), says=r"b\.frame:1:\d+: ")
+    yield Case("A bench tasks --suite context_held_out --episodes /dev/full", (*mug, "--episodes", "/dev/full"),
+               codes=(1,), says=r"--episodes", timeout=120)
+    yield Case("A SIGINT during bench tasks --suite context_held_out --episodes", (*mug, "--episodes", "e.jsonl"),
+               codes=(130,), absent=("e.jsonl",), signal=(2, 3.0))
+    # -- bench parse --corpus ------------------------------------------------------------------------------------------
+    corpus = ("bench", "parse", "--corpus", "c.jsonl")
+    yield Case("A bench parse --corpus that is a folder", ("bench", "parse", "--corpus", "d"), (("d", "dir"),),
+               codes=(1,), says=r"\bd: ")
+    yield Case("A bench parse --corpus that is a FIFO", corpus, (("c.jsonl", "fifo"),), codes=(1,),
+               says=r"c\.jsonl: ", timeout=30)
+    yield Case("A bench parse --corpus that is a link to itself", corpus, (("c.jsonl", "link:c.jsonl"),), codes=(1,),
+               says=r"c\.jsonl: ")
+    yield Case("A bench parse --corpus that is empty", corpus, (("c.jsonl", b""),), codes=(1,), keep=("c.jsonl",),
+               says=r"c\.jsonl: ")
+    yield Case("A bench parse --corpus of binary bytes", corpus, (("c.jsonl", b"\x00\xff\xfe" * 100),), codes=(1,),
+               keep=("c.jsonl",), says=r"c\.jsonl")
+    yield Case("A bench parse --corpus nested 100,000 deep", corpus,
+               (("c.jsonl", b'{"text": "go", "expect": ' + b"[" * 100_000 + b"]" * 100_000 + b"}\n"),), codes=(1,),
+               keep=("c.jsonl",), says=r"c\.jsonl:1:\d+: ")
+    yield Case("A bench parse --corpus whose element is 5,000 digits", corpus,
+               (("c.jsonl", b'{"text": "go", "expect": [{"frame": "Go", "elements": {"goal": ' + b"9" * 5000
+                 + b"}}]}\n"),), codes=(1,), keep=("c.jsonl",), says=r"c\.jsonl:1:\d+: ")
+    table = "task_type\tobject\treceptacle\tmrecep\tsliced\tgoal_sentence\n"
+    yield Case("A bench parse --constants holding 5,000 digits",
+               ("bench", "parse", "--corpus", "g.tsv", "--constants", "k.json"),
+               (("g.tsv", (table + "pick_and_place_simple\tApple\tFridge\t\t0\tput an apple in the fridge\n").encode()),
+                ("k.json", b'{"OBJECTS": ["Apple", "Fridge"], "n": ' + b"9" * 5000 + b"}\n")), codes=(1,),
+               keep=("g.tsv", "k.json"), says=r"k\.json:1:\d+: ")
+    # -- run --png / --rrd into odd places -----------------------------------------------------------------------------
+    kitchen = ("run", "go to the kitchen", "--map", "m.yaml", "--particles", "20")
+    ros = robot_map()
+    yield Case("A run --png onto a folder", (*kitchen, "--png", "d"), (*ros, ("d", "dir")), codes=(1,),
+               keep=("m.yaml", "map.pgm"), says=r"--png d\b")
+    yield Case("A run --png onto a FIFO", (*kitchen, "--png", "f.png"), (*ros, ("f.png", "fifo")), codes=(1,),
+               keep=("m.yaml", "map.pgm"), says=r"--png f\.png", timeout=30)
+    yield Case("A run --png onto a link to itself", (*kitchen, "--png", "l.png"), (*ros, ("l.png", "link:l.png")),
+               codes=(1,), keep=("m.yaml", "map.pgm"), says=r"--png l\.png")
+    yield Case("A run --png and --rrd onto one path", (*kitchen, "--png", "o.png", "--rrd", "o.png"), ros, codes=(1,),
+               keep=("m.yaml", "map.pgm"), absent=("o.png",), says=r"--(png|rrd) o\.png")
+    yield Case("A run --png onto the map's image", (*kitchen, "--png", "map.pgm"), ros, codes=(1,),
+               keep=("m.yaml", "map.pgm"), says=r"--png map\.pgm")
+    yield Case("A run --png onto a hard link to the map's image", (*kitchen, "--png", "x.png"),
+               (*ros, ("x.png", "hard:map.pgm")), codes=(1,), keep=("m.yaml", "map.pgm", "x.png"), says=r"--png x\.png")
+    yield Case("A run --rrd onto a link to the map's image", (*kitchen, "--rrd", "x.rrd"),
+               (*ros, ("x.rrd", "link:map.pgm")), codes=(1,), keep=("m.yaml", "map.pgm"), says=r"--rrd x\.rrd")
+    # -- a researcher's own ROS map: good but unusual ------------------------------------------------------------------
+    (_, head), (_, image) = ros
+    yield Case("A run --png on a researcher's ROS map with rooms added by hand", (*kitchen, "--png", "o.png"), ros,
+               codes=(0,), keep=("m.yaml", "map.pgm"), whole=("o.png",), says=r"done: Go\(goal=kitchen\)")
+    yield Case("A validate of a ROS map saved with CRLF line ends", ("validate", "m.yaml"),
+               (("m.yaml", head.replace(b"\n", b"\r\n")), ("map.pgm", image)), codes=(0,), keep=("m.yaml",),
+               says=r"ok: ")
+    yield Case("A validate of a ROS map with a BOM", ("validate", "m.yaml"),
+               (("m.yaml", b"\xef\xbb\xbf" + head), ("map.pgm", image)), codes=(0,), keep=("m.yaml",), says=r"ok: ")
+    yield Case("A validate of a ROS map whose image's name has a space", ("validate", "m.yaml"),
+               (("m.yaml", head.replace(b"image: map.pgm", b"image: my map.pgm")), ("my map.pgm", image)),
+               codes=(0,), says=r"ok: ")
+    yield Case("A validate of a ROS map whose image is in the folder above", ("validate", "d/m.yaml"),
+               (("d/m.yaml", head.replace(b"image: map.pgm", b"image: ../map.pgm")), ("map.pgm", image)),
+               codes=(0,), says=r"ok: ")
+    yield Case("A validate of a ROS map with two-number origin", ("validate", "m.yaml"),
+               (("m.yaml", head.replace(b", 0.000000]", b"]")), ("map.pgm", image)), codes=(0,), says=r"ok: ")
+    # -- a researcher's own ROS map: broken, each at its line and column -----------------------------------------------
+    def bad(name: str, yaml_text: bytes, says: str, *more: tuple[str, bytes | str]) -> Case:
+        return Case(f"A validate of a ROS map {name}", ("validate", "m.yaml"),
+                    (("m.yaml", yaml_text), ("map.pgm", image), *more), codes=(1,), keep=("m.yaml", "map.pgm"),
+                    says=says)
+    yield bad("indented with a tab", head.replace(b"  - {name: hall", b"\t- {name: hall"), r"m\.yaml:\d+:\d+: ")
+    yield bad("in Latin-1", head.replace(b"name: lab", b"name: lab\xe9"), r"m\.yaml:\d+:\d+: ")
+    yield bad("whose resolution is said twice", head + b"resolution: 0.1\n", r"m\.yaml:\d+:\d+: .*resolution")
+    yield bad("whose thresholds cross", head.replace(b"free_thresh: 0.25", b"free_thresh: 0.9"),
+              r"m\.yaml:\d+:\d+: ")
+    yield bad("whose origin has 400 digits", head.replace(b"origin: [-5.000000", b"origin: [" + b"9" * 400),
+              r"m\.yaml:4:\d+: ")
+    yield bad("whose negate is 2", head.replace(b"negate: 0", b"negate: 2"), r"m\.yaml:5:\d+: ")
+    yield bad("of two documents", head + b"---\nname: other\n", r"m\.yaml:\d+:\d+: ")
+    yield bad("whose name is tagged !!binary", head.replace(b"name: lab", b"name: !!binary bGFi"),
+              r"m\.yaml:9:7: .*!!binary")
+    yield bad("whose rooms are tagged !!python/object/apply",
+              head.replace(b"rooms:", b"rooms: !!python/object/apply:os.system"), r"m\.yaml:10:8: .*!!python")
+    yield bad("whose name has a local tag", head.replace(b"name: lab", b"name: !mine lab"), r"m\.yaml:9:7: .*!mine")
+    yield bad("whose image is /dev/zero", head.replace(b"image: map.pgm", b"image: /dev/zero"), r"m\.yaml:1:8: ")
+    yield bad("whose image is a FIFO", head.replace(b"image: map.pgm", b"image: f.pgm"), r"m\.yaml:1:8: ",
+              ("f.pgm", "fifo"))
+    yield bad("whose image is the map itself", head.replace(b"image: map.pgm", b"image: m.yaml"), r"m\.yaml:1:8: ")
+    yield bad("whose image is a folder", head.replace(b"image: map.pgm", b"image: d"), r"m\.yaml:1:8: ", ("d", "dir"))
+    yield bad("whose image is a link to itself", head.replace(b"image: map.pgm", b"image: l.pgm"), r"m\.yaml:1:8: ",
+              ("l.pgm", "link:l.pgm"))
+    yield bad("whose image is empty", head.replace(b"image: map.pgm", b"image: e.pgm"), r"m\.yaml:1:8: ",
+              ("e.pgm", b""))
+    def pgm(name: str, data: bytes, says: str = r"m\.yaml:1:8: ") -> Case:
+        return Case(f"A validate of a ROS map whose PGM {name}", ("validate", "m.yaml"),
+                    (("m.yaml", head), ("map.pgm", data)), codes=(1,), keep=("m.yaml", "map.pgm"), says=says)
+    yield pgm("says 4000 x 4000 and holds 100 bytes", b"P5\n4000 4000\n255\n" + b"\xfe" * 100)
+    yield pgm("says 0 x 0", b"P5\n0 0\n255\n")
+    yield pgm("says 1e6 x 1e6", b"P5\n1000000 1000000\n255\n" + b"\xfe" * 100)
+    yield pgm("has a maximum of 0", b"P5\n10 10\n0\n" + b"\x00" * 100)
+    yield pgm("has a width of 5,000 digits", b"P5\n" + b"9" * 5000 + b" 10\n255\n", r"m\.yaml:1:8: .*digits")
+    yield pgm("(text) holds a negative pixel", b"P2\n2 2\n255\n1 -2 3 4\n", r"m\.yaml:1:8: .*'-2'")
+    yield pgm("(text) holds a fraction", b"P2\n2 2\n255\n1 2.5 3 4\n", r"m\.yaml:1:8: .*'2\.5'")
+    yield pgm("(text) holds NaN", b"P2\n2 2\n255\n1 nan 3 4\n", r"m\.yaml:1:8: .*'nan'")
+    yield pgm("(text) holds a pixel of 5,000 digits", b"P2\n2 2\n255\n1 " + b"9" * 5000 + b" 3 4\n",
+              r"m\.yaml:1:8: .*exceeds the maximum 255")
+    # -- frame files ---------------------------------------------------------------------------------------------------
+    whisk_yaml = (b"frames:\n  - frame: Whisk\n    lexical_units: [whisk]\n    elements:\n      theme: {type: object}\n"
+                  b"    actions: [navigate(theme)]\n")
+    whisk_dsl = b'frame Whisk "whisk" {\n  theme: object\n  do navigate(theme)\n}\n'
+    yaml_plan = ("plan", "whisk the cup", "--framelib", "+f.yaml")
+    dsl_plan = ("plan", "whisk the cup", "--framelib", "+f.frame")
+    yield Case("A plan on a YAML frame file with a BOM and CRLF", yaml_plan,
+               (("f.yaml", b"\xef\xbb\xbf" + whisk_yaml.replace(b"\n", b"\r\n")),), codes=(0,), keep=("f.yaml",),
+               says=r"Whisk")
+    yield Case("A plan on a frame file with a BOM and CRLF", dsl_plan,
+               (("f.frame", b"\xef\xbb\xbf" + whisk_dsl.replace(b"\n", b"\r\n")),), codes=(0,), keep=("f.frame",),
+               says=r"Whisk")
+    yield Case("A plan on a YAML frame file in Latin-1", yaml_plan, (("f.yaml", whisk_yaml.replace(b"[whisk]",
+                                                                                                     b"[whisk\xe9]")),),
+               codes=(1,), keep=("f.yaml",), says=r"f\.yaml:3:\d+: ")
+    yield Case("A plan on a frame file in Latin-1", dsl_plan, (("f.frame", whisk_dsl.replace(b'"whisk"',
+                                                                                           b'"whisk\xe9"')),),
+               codes=(1,), keep=("f.frame",), says=r"f\.frame:1:\d+: ")
+    yield Case("A plan on a YAML frame file of two documents, the second repeating the frame", yaml_plan,
+               (("f.yaml", whisk_yaml + b"---\n" + whisk_yaml),), codes=(1,), keep=("f.yaml",),
+               says=r"f\.yaml:\d+:\d+: ")
+    yield Case("A plan on a YAML frame file whose units are tagged !!set", yaml_plan,
+               (("f.yaml", whisk_yaml.replace(b"[whisk]", b"!!set {whisk}")),), codes=(1,), keep=("f.yaml",),
+               says=r"f\.yaml:3:\d+: ")
+    yield Case("A plan on a YAML frame file whose frame name has a local tag", yaml_plan,
+               (("f.yaml", whisk_yaml.replace(b"frame: Whisk", b"frame: !x Whisk")),), codes=(1,), keep=("f.yaml",),
+               says=r"f\.yaml:2:\d+: .*!x")
+    # -- --jobs, the environment, the streams --------------------------------------------------------------------------
+    for jobs in ("65", "-1", "9" * 30):
+        yield Case(f"A bench tasks --jobs {jobs[:8]}", ("bench", "tasks", "--suite", "map", "--jobs", jobs),
+                   codes=(2,), says=r"--jobs")
+    yield Case("A run with HOME unset", sofa, codes=(0,), env=(("HOME", "<unset>"),), says=r"done: Go")
+    yield Case("A parse --file - with stdin closed", ("parse", "--file", "-"), codes=(1,), stream="closed-stdin",
+               says=r"stdin|standard input|-")
+    yield Case("A frames --json to a reader that has gone", ("frames", "--json"), codes=(0, 1, 141),
+               stream="gone-stdout", says=r"\A(?![\s\S]*Traceback)")
+
+
+def _bag_folder() -> tuple[tuple[str, bytes], ...]:
+    """A ROS 2 sqlite3 bag folder ``x/`` (``metadata.yaml`` and ``out.db3``) of a robot in the apartment, as its
+    files; none without the ros extra."""
+    try:
+        import rosbags  # noqa: F401
+    except ImportError:
+        return ()
+    import tempfile
+    from pathlib import Path
+
+    from seal_cli.bench.ros import write_run
+    from seal_cli.maps.formats.map_server import load_map
+    from seal_cli.resources import map_path
+
+    with tempfile.TemporaryDirectory() as folder:
+        bag = Path(folder) / "run_db3"
+        write_run(bag, load_map(map_path("apartment")), 20, 5, np.random.default_rng(0))
+        return tuple((f"x/{p.name}", p.read_bytes()) for p in sorted(bag.iterdir()))
+
+
+def hostile29_bag_cases() -> Iterator[Case]:
+    """Round hostile29's second batch, a researcher's own ROS 2 bag folder: an output onto its ``metadata.yaml`` or
+    a hard link to its database, and its ``metadata.yaml`` edited by hand (a YAML tag, Latin-1 bytes, 5,000 digits,
+    a syntax error, a file outside the folder), each refused at its line and column; given with a trailing slash,
+    through a link, with CRLF or a BOM, read as it comes."""
+    files = _bag_folder()
+    if not files:
+        return
+    meta = dict(files)["x/metadata.yaml"]
+    db = tuple(f for f in files if f[0] != "x/metadata.yaml")
+    keep = tuple(name for name, _ in files)
+    yield Case("A import-bag -o onto its bag folder's metadata.yaml", ("import-bag", "x", "-o", "x/metadata.yaml"),
+               files, codes=(1,), keep=keep, says=r"--output x/metadata\.yaml would overwrite")
+    yield Case("A import-bag -o onto a hard link to its bag's database", ("import-bag", "x", "-o", "h.yaml"),
+               (*files, ("h.yaml", "hard:x/out.db3")), codes=(1,), keep=(*keep, "h.yaml"), says=r"--output h\.yaml")
+    yield Case("A localize --bag --goals onto the bag folder's metadata.yaml",
+               ("localize", "--map", "apartment", "--bag", "x", "--task", "go to the kitchen", "--steps", "1",
+                "--particles", "20", "--goals", "x/metadata.yaml"), files, codes=(1,), keep=keep,
+               says=r"--goals x/metadata\.yaml")
+    def edited(name: str, text: bytes, says: str) -> Case:
+        return Case(f"A import-bag of a bag folder whose metadata.yaml {name}", ("import-bag", "x", "-o", "o.yaml"),
+                    (("x/metadata.yaml", text), *db), codes=(1,), keep=("x/metadata.yaml", "x/out.db3"),
+                    absent=("o.yaml",), says=says)
+    yield edited("holds a !!python tag", meta.replace(b"ros_distro: rosbags",
+                                                       b'ros_distro: !!python/object/apply:os.system ["true"]'),
+                 r"x/metadata\.yaml:17:15: ")
+    yield edited("ends in Latin-1 bytes", meta + b"# caf\xe9\n", r"x/metadata\.yaml:\d+:\d+: ")
+    yield edited("counts in 5,000 digits", meta.replace(b"  message_count: 26", b"  message_count: " + b"9" * 5000),
+                 r"x/metadata\.yaml:14:18: ")
+    yield edited("is cut inside a list", b"rosbag2_bagfile_information:\n  files: [\n", r"x/metadata\.yaml:\d+:\d+: ")
+    yield edited("lists a file outside the folder", meta.replace(b"  - out.db3", b"  - ../run.mcap"), r"\bx: ")
+    def read(name: str, argv: tuple[str, ...], more: tuple[tuple[str, bytes | str], ...] = (),
+             text: bytes = meta) -> Case:
+        return Case(f"A import-bag of a bag folder {name}", ("import-bag", *argv, "-o", "o.yaml"),
+                    (("x/metadata.yaml", text), *db, *more), codes=(0,), keep=("x/metadata.yaml", "x/out.db3"),
+                    whole=("o.yaml",), says=r"5 observations")
+    yield read("given with a trailing slash", ("x/",))
+    yield read("given through a link", ("y",), (("y", "link:x"),))
+    yield read("whose metadata.yaml has CRLF line ends", ("x",), text=meta.replace(b"\n", b"\r\n"))
+    yield read("whose metadata.yaml starts with a BOM", ("x",), text=b"\xef\xbb\xbf" + meta)
+
+
+def hostile29_environment_cases() -> Iterator[Case]:
+    """Round hostile29's third batch, the environment a command starts in: seal's cache folder a device, a file, a link
+    loop or the map itself; ``XDG_CACHE_HOME`` a file; ``HOME`` empty or missing; matplotlib's ``MPLCONFIGDIR`` a
+    file or a device (matplotlib then rebuilt its font cache in a temporary folder each run, 30 s, and said so in two
+    lines of its own); ``TMPDIR`` a file or missing; ``COLUMNS`` 0, negative, a word, 1; ``PYTHONIOENCODING`` ascii
+    and latin-1; ``LC_ALL=C`` with an accented map name; ``--jobs 64`` for one task."""
+    parse = ("parse", "go to the café")
+    for name, value, files in (("a device", "/dev/null", ()), ("a file", "f", (("f", b"x"),)),
+                               ("a link to itself", "l", (("l", "link:l"),))):
+        yield Case(f"A parse with SEAL_CACHE_DIR {name}", parse, files, codes=(0,), env=(("SEAL_CACHE_DIR", value),),
+                   keep=tuple(n for n, c in files if isinstance(c, bytes)), says=r"Go\b")
+    small = b"name: m\nbounds: [0, 0, 10, 10]\nrooms:\n  - {name: hall, box: [0, 0, 10, 10]}\n"
+    yield Case("A map with SEAL_CACHE_DIR the map itself", ("map", "m.yaml"), (("m.yaml", small),), codes=(0,),
+               env=(("SEAL_CACHE_DIR", "m.yaml"),), keep=("m.yaml",), says=r"(?s).")
+    yield Case("A parse with XDG_CACHE_HOME a file", parse, (("f", b"x"),), codes=(0,),
+               env=(("XDG_CACHE_HOME", "f"), ("SEAL_CACHE_DIR", "<unset>")), keep=("f",), says=r"Go\b")
+    for name, value in (("empty", ""), ("a folder that does not exist", "/nonexistent/home")):
+        yield Case(f"A parse with HOME {name}", parse, codes=(0,),
+                   env=(("HOME", value), ("XDG_CACHE_HOME", "<unset>"), ("SEAL_CACHE_DIR", "<unset>")), says=r"Go\b")
+    drive = ("run", "go to the kitchen", "--map", "apartment", "--particles", "20", "--png", "o.png")
+    for name, value, files in (("a file", "f", (("f", b"x"),)), ("a device", "/dev/null", ())):
+        yield Case(f"A run --png with MPLCONFIGDIR {name}", drive, files, codes=(0,),
+                   env=(("MPLCONFIGDIR", value), ("PYTHONWARNINGS", "<unset>")), whole=("o.png",),
+                   keep=tuple(n for n, c in files if isinstance(c, bytes)),
+                   says=rf"warning: MPLCONFIGDIR {value} is not a folder", unsaid=r"Matplotlib created|mkdir -p")
+    corpus = b'{"text": "go to the kitchen", "expect": [{"frame": "Go", "elements": {"goal": "kitchen"}}]}\n'
+    yield Case("A bench parse with TMPDIR a file", ("bench", "parse", "--corpus", "c.jsonl"),
+               (("c.jsonl", corpus), ("t", b"x")), codes=(0,), env=(("TMPDIR", "t"),), keep=("c.jsonl", "t"),
+               says=r"frames 1\.000", timeout=120)
+    yield Case("A run --png with TMPDIR missing", drive, codes=(0,), env=(("TMPDIR", "/nonexistent"),),
+               whole=("o.png",), says=r"done: Go")
+    for columns in ("0", "-5", "abc", "1"):
+        yield Case(f"A plan with COLUMNS={columns}", ("plan", "go to the kitchen", "--map", "apartment"), codes=(0,),
+                   env=(("COLUMNS", columns),), says=r"Go")
+    yield Case("A parse with PYTHONIOENCODING=ascii:strict of a snowman", ("parse", "go to the \u2603 now"),
+               codes=(1,), env=(("PYTHONIOENCODING", "ascii:strict"),), says=r"column 11: .*U\+2603")
+    yield Case("A run with PYTHONIOENCODING=latin-1 of a word the map lacks", ("run", "go to the café", "--map",
+                                                                               "apartment", "--particles", "20"),
+               codes=(1,), env=(("PYTHONIOENCODING", "latin-1"),), says=r"column 7: the apartment has no caf")
+    yield Case("A validate with LC_ALL=C of a map named café", ("validate", "m.yaml"),
+               (("m.yaml", small.replace(b"name: m", "name: café".encode())),), codes=(0,),
+               env=(("LC_ALL", "C"), ("LANG", "C"), ("PYTHONUTF8", "0")), keep=("m.yaml",), says=r"ok: ")
+    yield Case("A bench tasks --jobs 64 for one task", ("bench", "tasks", "--suite", "map", "--map", "studio",
+                                                          "--command", "go to the sofa", "--layouts", "1",
+                                                          "--policies", "oracle", "--particles", "20", "--jobs", "64"),
+               codes=(0,), says=r"(?s).", timeout=120)

@@ -21,8 +21,9 @@ from seal_cli.errors import SealError, SealErrors, readable
 if TYPE_CHECKING:
     from rich.console import Console
 
-__all__ = ["PIPE_WIDTH", "LazyConsole", "dump_json", "emit_json", "err", "out", "plain", "printable_streams",
-           "progress_bar", "report", "run_command", "run_framework", "sane_sizes", "styled", "whole_writes"]
+__all__ = ["PIPE_WIDTH", "LazyConsole", "dump_json", "emit_json", "err", "out", "plain", "plot_cache",
+           "printable_streams", "progress_bar", "report", "run_command", "run_framework", "sane_sizes", "styled",
+           "whole_writes"]
 
 PIPE_WIDTH = 200
 """Columns of the output when it is not a terminal (a file, a pipe) and ``COLUMNS`` is not set."""
@@ -312,6 +313,27 @@ def sane_sizes(environ: MutableMapping[str, str] = os.environ) -> None:
             environ[name] = str(MAX_COLUMNS)
         elif name != "LINES" and int(text) < MIN_COLUMNS:
             environ[name] = str(MIN_COLUMNS)
+
+
+def plot_cache(environ: MutableMapping[str, str] = os.environ) -> str | None:
+    """matplotlib's cache folder made one it can write: a ``MPLCONFIGDIR`` that is a file or a device (or a folder
+    that cannot be written) made matplotlib rebuild its font cache in a new temporary folder on every run (30 s of a
+    ``run --png``) and say so in two lines of its own (hostile29); it is then kept in seal's own cache folder
+    (:func:`seal_cli.cache.folder`), and the warning to say is returned. A name that does not exist yet is left to
+    matplotlib, which makes it; with seal's cache off, nothing changes."""
+    given = environ.get("MPLCONFIGDIR")
+    if not given or not os.path.lexists(given):
+        return None
+    if os.path.isdir(given) and os.access(given, os.W_OK | os.X_OK):
+        return None
+    from seal_cli import cache
+
+    folder = cache.folder(environ)
+    if folder is None:
+        return None
+    instead = folder / "matplotlib"
+    environ["MPLCONFIGDIR"] = str(instead)
+    return f"MPLCONFIGDIR {given} is not a folder seal can write: matplotlib's cache is kept in {instead} instead"
 
 
 def printable_streams() -> None:

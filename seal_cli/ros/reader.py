@@ -13,6 +13,7 @@ from pathlib import Path
 from typing import Any
 
 from seal_cli.errors import SealError, Where
+from seal_cli.fileio import read_yaml
 from seal_cli.ros.messages import require_rosbags, typestore
 
 __all__ = ["Bag", "bag_topics", "open_bag"]
@@ -128,6 +129,8 @@ def open_bag(path: str | Path) -> Iterator[Bag]:
     except OSError as exc:  # a link loop, a name too long: Path.exists said "no such bag"
         raise SealError(f"cannot read this bag: {exc.strerror}", Where(str(path))) from None
     _check_suffix(path)
+    if path.is_dir():  # its metadata read as seal reads YAML first: rosbags' own failures said no line (hostile29)
+        read_yaml(path / "metadata.yaml", what="ROS 2 bag's metadata")
     ros1 = path.suffix == ".bag"
     try:
         reader = AnyReader([path], default_typestore=typestore(ros1))

@@ -226,14 +226,15 @@ def test_the_context_suite_is_the_chosen_cases_from_their_own_starts(shared_data
         selected_houses(shared_data, cases_file=broken)
 
 
-def _run_fewest_cased_command(suite: str, cases_file: Path, data: Path) -> dict:
-    """`bench tasks --suite SUITE` on the command of the cases file with the fewest cases (one layout, the oracle):
-    its JSON, after checking it ran exactly that command's cases, each a success."""
+def _run_fewest_cased_command(suite: str, cases_file: Path, data: Path | None) -> dict:
+    """`bench tasks --suite SUITE` on the command of the cases file with the fewest cases (one layout, the oracle;
+    ``--data`` when given): its JSON, after checking it ran exactly that command's cases, each a success."""
     cases = json.loads(cases_file.read_text(encoding="utf-8"))["cases"]
     text = min({c["command"] for c in cases}, key=lambda t: sum(c["command"] == t for c in cases))
     mine = [c for c in cases if c["command"] == text]
     result = runner.invoke(app, ["bench", "tasks", "--suite", suite, "--command", text, "--layouts", "1",
-                                 "--policies", "oracle", "--jobs", "1", "--data", str(data), "--json"])
+                                 "--policies", "oracle", "--jobs", "1", "--json",
+                                 *(["--data", str(data)] if data is not None else [])])
     assert result.exit_code == 0, result.output
     found: dict = json.loads(result.stdout)
     assert found["suite"] == suite
@@ -278,11 +279,10 @@ def test_a_drawn_house_is_its_seed_alone_every_room_reached_and_every_command_pl
             assert len(plan_text(text, library, vocabulary=vocabulary_of_map(m)).steps) == 2
 
 
-def test_bench_tasks_context_held_out_runs_the_cases_chosen_on_the_drawn_houses(tmp_path: Path) -> None:
+def test_bench_tasks_context_held_out_runs_the_cases_chosen_on_the_drawn_houses() -> None:
     from seal_cli.bench.context import HELD_OUT_CASES_FILE
 
-    # drawn in code: no shared data read (an empty folder as --data)
-    assert _run_fewest_cased_command("context_held_out", HELD_OUT_CASES_FILE, tmp_path)["houses"] == "held_out"
-    refused = runner.invoke(app, ["bench", "tasks", "--suite", "context_held_out", "--houses", "unseen",
-                                  "--data", str(tmp_path)])
+    # drawn in code: no shared data read, none needed (hostile29: --data is refused for this suite)
+    assert _run_fewest_cased_command("context_held_out", HELD_OUT_CASES_FILE, None)["houses"] == "held_out"
+    refused = runner.invoke(app, ["bench", "tasks", "--suite", "context_held_out", "--houses", "unseen"])
     assert refused.exit_code == 1 and "--houses" in refused.output

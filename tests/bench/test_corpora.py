@@ -63,3 +63,19 @@ def test_a_verb_fill_needs_no_value(tmp_path: Path) -> None:
     path = tmp_path / "c.jsonl"
     path.write_text('{"text": "go", "command_types": ["goToLoc"], "fills": [{"verb_class": "go"}]}\n')
     assert len(read_corpus(path).items) == 1
+
+
+@pytest.mark.parametrize(("line", "column", "says"), [
+    ('{"text": "go", "expect": [{"frame": "Go", "elements": {"goal": ' + "9" * 5000 + "}}]}", 64,
+     "an integer of 5,000 digits"),
+    ('{"text": "go", "expect": ' + "[" * 100_000 + "]" * 100_000 + "}", 26 + 498, "nested too deeply"),
+])
+def test_a_corpus_line_python_cannot_read_is_refused_at_its_column(tmp_path: Path, line: str, column: int,
+                                                                   says: str) -> None:
+    """5,000 digits were a ValueError's traceback; nesting was refused at the line alone (hostile29)."""
+    path = tmp_path / "c.jsonl"
+    path.write_text(line + "\n", encoding="utf-8")
+    with pytest.raises(SealError) as caught:
+        read_corpus(path)
+    assert (caught.value.where.line, caught.value.where.column) == (1, column)
+    assert says in caught.value.message

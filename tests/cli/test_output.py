@@ -407,3 +407,22 @@ def test_an_interrupt_ends_the_process_without_freeing_what_it_left_half_built()
             "c.main = command\nsys.argv = ['seal', 'frames']\nm.main()\n")
     done = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, check=False, timeout=60)
     assert (done.returncode, done.stderr) == (130, "interrupted\n")
+
+
+def test_a_matplotlib_cache_folder_that_is_none_is_replaced_by_seals(tmp_path: Path) -> None:
+    """``MPLCONFIGDIR=/dev/null`` or a file: matplotlib rebuilt its font cache in a new temporary folder on every run,
+    saying so in two lines of its own (hostile29). A writable folder, or a name not made yet, is left as given."""
+    from seal_cli.cli.output import plot_cache
+
+    (tmp_path / "f").write_text("x", encoding="utf-8")
+    for given in ("/dev/null", str(tmp_path / "f")):
+        environ = {"MPLCONFIGDIR": given, "SEAL_CACHE_DIR": str(tmp_path / "c")}
+        assert plot_cache(environ) == (f"MPLCONFIGDIR {given} is not a folder seal can write: matplotlib's cache is "
+                                       f"kept in {tmp_path / 'c' / 'matplotlib'} instead")
+        assert environ["MPLCONFIGDIR"] == str(tmp_path / "c" / "matplotlib")
+    for given in (str(tmp_path), str(tmp_path / "new")):
+        environ = {"MPLCONFIGDIR": given}
+        assert plot_cache(environ) is None and environ["MPLCONFIGDIR"] == given
+    environ = {"MPLCONFIGDIR": "/dev/null", "SEAL_NO_CACHE": "1"}  # no cache of seal's: matplotlib's own way
+    assert plot_cache(environ) is None and environ["MPLCONFIGDIR"] == "/dev/null"
+    assert plot_cache({}) is None

@@ -4,6 +4,7 @@ the bag's detections, the goals read back as PoseStamped, and bad input exits 1 
 from __future__ import annotations
 
 import json
+import re
 from pathlib import Path
 from typing import Any
 
@@ -288,3 +289,38 @@ def test_a_killed_goal_writer_s_work_folder_is_swept_and_the_bag_reads_back(tmp_
 
     with AnyReader([tmp_path / "g.mcap"], default_typestore=typestore(False)) as reader:
         assert [c.topic for c in reader.connections] == ["/goal_pose"] and len(list(reader.messages())) == 2
+
+
+def test_a_bag_folders_own_files_are_never_outputs(tmp_path: Path) -> None:
+    """``import-bag x -o x/metadata.yaml`` and ``localize --bag x --goals x/metadata.yaml`` replaced the bag's
+    metadata, and ``-o h.yaml``, a hard link to its database, the database (hostile29): rosbags reads them, not seal,
+    so nothing guarded them. Now an input folder's files are inputs; a new file in the folder is still written."""
+    bag = kitchen_run(tmp_path / "run_db3")
+    before = {p.name: p.read_bytes() for p in bag.iterdir()}
+    (tmp_path / "h.yaml").hardlink_to(next(p for p in bag.iterdir() if p.suffix == ".db3"))
+    for args in (("import-bag", str(bag), "-o", str(bag / "metadata.yaml")),
+                 ("import-bag", str(bag), "-o", str(tmp_path / "h.yaml")),
+                 ("localize", "--map", "apartment", "--bag", str(bag), "--task", "stir the cup", "--steps", "0",
+                  "--goals", str(bag / "metadata.yaml"))):
+        assert "would overwrite the input" in refused(*args)
+    assert {p.name: p.read_bytes() for p in bag.iterdir()} == before
+    result = invoke("import-bag", str(bag), "-o", str(bag / "obs.yaml"))
+    assert result.exit_code == 0, result.output
+    assert read_observations(bag / "obs.yaml")
+
+
+@pytest.mark.parametrize(("old", "new", "says"), [
+    (b"ros_distro: rosbags", b'ros_distro: !!python/object/apply:os.system ["true"]', "the tag !!python"),
+    (b"    message_count: ", b"    message_count: " + b"9" * 5000 + b"\n    its_count: ",
+     "cannot read this value: an integer of 5,000"),
+    (b"rosbag2_bagfile_information:", b"rosbag2_bagfile_information: [", "YAML syntax error"),
+    (b"\n", b"\n# caf\xe9\n", "this file is not UTF-8"),
+])
+def test_a_bag_folders_metadata_edited_by_hand_is_refused_at_its_line(tmp_path: Path, old: bytes, new: bytes,
+                                                                       says: str) -> None:
+    """rosbags' own failures named the folder alone, with its YAML's message or a Python limit's (hostile29)."""
+    bag = kitchen_run(tmp_path / "run_db3")
+    meta = bag / "metadata.yaml"
+    meta.write_bytes(meta.read_bytes().replace(old, new, 1))
+    said = refused("import-bag", str(bag), "-o", str(tmp_path / "o.yaml"), out=tmp_path / "o.yaml")
+    assert re.match(rf"error: {re.escape(str(meta))}:\d+:\d+: {says}", said), said

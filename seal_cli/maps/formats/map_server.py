@@ -106,6 +106,14 @@ BAND = 4 * 2**20
 """Pixels classified at a time when a large image is read (bounded temporaries)."""
 
 
+MAX_HEADER_DIGITS = 12
+"""The most digits a number of a PGM header may have (a width of 10**12 pixels is already no image seal reads)."""
+
+P2_TOKEN = re.compile(rb"[^\s0-9]")
+"""What a text PGM's pixels may not hold: netpbm's values are whole numbers from 0 to the maximum, written in
+ASCII digits (a sign, a decimal point, ``nan`` or ``1e3`` is no pixel value)."""
+
+
 def _pgm_header(data: bytes) -> tuple[int, int, int, int]:
     """Width, height, maximum value and where the pixels start, of a PGM (P5 or P2)."""
     if data[:2] not in (b"P5", b"P2"):
@@ -124,6 +132,9 @@ def _pgm_header(data: bytes) -> tuple[int, int, int, int]:
             pos += 1
         if start == pos:
             raise SealError("PGM header is cut short or malformed (expected width, height and maximum value)")
+        if pos - start > MAX_HEADER_DIGITS:  # int() of 4,300 digits and more raises, and no image is that large
+            raise SealError(f"PGM header's {('width', 'height', 'maximum value')[len(fields)]} has {pos - start:,} "
+                            f"digits ({data[start:start + 12].decode()}…): no image is that large")
         fields.append(int(data[start:pos]))
     width, height, maxval = fields
     if width <= 0 or height <= 0 or not 0 < maxval < 65536:
@@ -155,13 +166,21 @@ def read_pgm(data: bytes) -> NDArray[np.float64]:
     if data[:2] == b"P5":
         pixels = _p5_levels(data, width, height, maxval, pos).astype(float).ravel()
     else:
-        try:
-            values = np.array(data[pos:].split(), dtype=float)
-        except ValueError:
-            raise SealError("PGM (P2) pixel values must be whole numbers") from None
-        if len(values) < count:
-            raise SealError(f"PGM image is truncated: {width}×{height} pixels, only {len(values)} values")
-        pixels = values[:count]
+        bad = P2_TOKEN.search(data, pos)
+        if bad is not None:
+            start = max(data.rfind(space, pos, bad.start()) for space in (b" ", b"\n", b"\t", b"\r")) + 1
+            token = data[start:].split(maxsplit=1)[0][:12].decode("ascii", "backslashreplace")
+            raise SealError(f"PGM (P2) pixel values must be whole numbers from 0 to {maxval} in ASCII digits, "
+                            f"not {token!r} (byte {start + 1:,} of the file)")
+        tokens = data[pos:].split()
+        if len(tokens) < count:
+            raise SealError(f"PGM image is truncated: {width}×{height} pixels, only {len(tokens)} values")
+        tokens = tokens[:count]
+        if max(map(len, tokens), default=0) > MAX_HEADER_DIGITS:  # beyond any maximum (and int() of 4,300 raises)
+            longest = max(tokens, key=len)
+            raise SealError(f"PGM pixel value {longest[:12].decode()}… ({len(longest):,} digits) exceeds the "
+                            f"maximum {maxval} in its header")
+        pixels = np.array(tokens, dtype=np.int64).astype(float)
         if pixels.max(initial=0) > maxval:
             raise SealError(f"PGM pixel value {int(pixels.max())} exceeds the maximum {maxval} in its header")
     return (pixels * (255.0 / maxval)).reshape(height, width)

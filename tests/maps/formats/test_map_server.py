@@ -35,6 +35,27 @@ def test_a_broken_pgm_is_one_clear_error(data: bytes, says: str) -> None:
         read_pgm(data)
 
 
+@pytest.mark.parametrize(("data", "says"), [
+    # a text PGM's values are ASCII digits: a sign, a fraction, NaN or an exponent was read by float() (hostile29)
+    (b"P2\n2 2\n255\n1 -2 3 4\n", r"not '-2' \(byte 14 of the file\)"),
+    (b"P2\n2 2\n255\n1 2.5 3 4\n", r"not '2\.5' \(byte 14 of the file\)"),
+    (b"P2\n2 2\n255\n1 nan 3 4\n", "not 'nan'"),
+    (b"P2\n2 2\n255\n1\t+2 3 4\n", "not '\\+2'"),
+    (b"P2\n2 2\n255\n1 1e3 3 4\n", "not '1e3'"),
+    # 5,000 digits: int() raised ValueError in the header, and a pixel became inf, int(inf) an OverflowError
+    (b"P5\n" + b"9" * 5000 + b" 10\n255\n", "width has 5,000 digits"),
+    (b"P5\n10 10\n" + b"9" * 13 + b"\n", "maximum value has 13 digits"),
+    (b"P2\n2 2\n255\n1 " + b"9" * 5000 + b" 3 4\n", r"999999999999… \(5,000 digits\) exceeds the maximum 255"),
+])
+def test_a_pgm_holding_what_no_pgm_holds_is_refused_saying_what(data: bytes, says: str) -> None:
+    with pytest.raises(SealError, match=says):
+        read_pgm(data)
+
+
+def test_a_text_pgm_of_digits_reads_as_before() -> None:
+    assert read_pgm(b"P2\n3 1\n255\n0\t254\r\n205\n").tolist() == [[0.0, 254.0, 205.0]]
+
+
 def test_a_pgm_is_scaled_to_255_with_row_zero_on_top() -> None:
     grey = read_pgm(b"P2\n2 2\n# max 10\n10\n0 10\n5 10\n")
     assert grey.tolist() == [[0.0, 255.0], [127.5, 255.0]]
