@@ -86,8 +86,8 @@ def set_aside(lexicon: Lexicon, words: Sequence[Word]) -> tuple[list[Word], list
     if "for" in said and ("me" in said or "us" in said):
         found = next((i for i in range(1, len(words)) if _for_whom_before_question(lexicon, words, i)), None)
         if found is not None:                       # "find out *for me* how many ...": whom it is done for, beside
-            rest, remarks = set_aside(lexicon, [*words[:found], *words[found + 2:]])
-            return rest, sorted([(words[found].start, words[found + 1].end), *remarks])
+            rest, inner = set_aside(lexicon, [*words[:found], *words[found + 2:]])
+            return rest, sorted([(words[found].start, words[found + 1].end), *inner])
     if "(" not in said and ")" not in said and (";" not in said or not any(_dash(w) for w in words)):
         return list(words), []                      # the commonest case: nothing to set aside, asked cheaply
     kept: list[Word] = []
