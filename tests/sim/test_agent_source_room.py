@@ -81,7 +81,8 @@ def test_no_such_thing_on_the_map_after_the_room_said_ends_there() -> None:
     lines = said_lines(report)
     assert "no mug in the kitchen, where the command said it was" in lines
     assert not any(a.startswith("searches the whole house") for a in lines)
-    assert report["reason"].startswith("no mug found: the apartment map names none")
+    assert report["reason"].startswith("no mug found: none in the kitchen, where the command said, and the apartment "
+                                       "map names none elsewhere")    # it looked there (lead, stop 42)
 
 
 def test_a_thing_taken_from_elsewhere_than_the_place_said_is_said_so() -> None:
