@@ -192,7 +192,9 @@ class MapNames:
             own = len(dict.fromkeys(w for w in map(words_of, spelled[:mine]) if w))
             closed = {"".join(n) for n in map(words_of, spelled[:mine]) if n}
             heads = frozenset(n[-1] for n in map(words_of, spelled) if n and (     # not a synonym's: a "tv table";
-                n in names[:own] or "".join(n) in closed))    # but "arm chair" is "armchair" spelt apart: a chair
+                n in names[:own] or "".join(n) in closed)     # but "arm chair" is "armchair" spelt apart: a chair
+                and not (n[-1].isdigit() or n[-1] in NUMBERS))  # a number alone calls no place: "table 2" (or
+            #         "table two") on a map with sofa_2 and no table_2 is not the sofa (lead, stop 42: it was)
             found.append(Referent(class_key(place.name), "place", place.cls,
                                   class_key(place.room) if place.room else None, names, heads, own))
         for person in self.map.people:

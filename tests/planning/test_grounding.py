@@ -139,6 +139,11 @@ def test_a_numbered_place_is_its_number_said_as_a_word_too(library: Library) -> 
         assert [str(s) for s in plan_text(f"go to {said}", library, map=cafe).steps] == [f"Go(goal={table})"]
     with pytest.raises(SealError, match=r"no table four \(only table_1 and table_2 and table_3"):
         plan_text("go to table four", library, map=cafe)
+    apartment = load_map("apartment")       # sofa_2 and no table_2: a number alone calls no place (it was the sofa)
+    for said in ("table 2", "table two"):
+        with pytest.raises(SealError, match=f"the apartment has no {said}"):
+            plan_text(f"go to {said}", library, map=apartment)
+    assert [str(s) for s in plan_text("go to sofa two", library, map=apartment).steps] == ["Go(goal=sofa_2)"]
 
 
 def test_a_question_about_what_the_map_lacks_is_asked_not_refused(library: Library) -> None:
