@@ -171,17 +171,22 @@ def _what(message: str, names: MapNames | None) -> Question | None:
     words = message.lower().replace("'", "").replace("’", "").split()
     if names is not None and (named := _name_of(words, names)) is not None:
         return named
-    if not words or words[0] not in ASKING_WHAT or names is None:
+    if not words or words[0] not in ASKING_WHAT or names is None or (at := _relation_at(words, 1)) is None:
         return None
-    for i in range(1, len(words)):
+    i, n, said = at
+    found = _longest_grounded(words[i + n:], names)
+    return None if found is None else Question("what", found.id, said, ASKING_WHAT[words[0]])
+
+
+def _relation_at(words: Sequence[str], start: int) -> tuple[int, int, str] | None:
+    """The first word of :data:`CONTAINING` at or after ``start``: where it is, how many words it is, and the
+    relation said (in, on or at); None when there is none."""
+    for i in range(start, len(words)):
         for relation in CONTAINING:
             rel = relation.split()
-            if words[i:i + len(rel)] == rel:
-                found = _longest_grounded(words[i + len(rel):], names)
-                if found is not None:
-                    said = "in" if relation in ("inside", "in") else "on" if relation in ("on", "on top of") else "at"
-                    return Question("what", found.id, said, ASKING_WHAT[words[0]])
-                return None
+            if list(words[i:i + len(rel)]) == rel:
+                said = "in" if relation in ("inside", "in") else "on" if relation in ("on", "on top of") else "at"
+                return i, len(rel), said
     return None
 
 
@@ -190,21 +195,13 @@ def _name_of(words: Sequence[str], names: MapNames) -> Question | None:
     the run said "name" to the speaker, the message's head, and drove nowhere). The words between "of" and the place
     must name a person ("the name of the book on the shelf" is no such question)."""
     said = list(words[1:] if words[:1] == ["the"] else words)
-    if len(said) < 4 or said[0] not in NAME_OF or said[1] != "of":
+    if len(said) < 4 or said[0] not in NAME_OF or said[1] != "of" or (at := _relation_at(said, 3)) is None:
         return None
-    for i in range(3, len(said)):
-        for relation in CONTAINING:
-            rel = relation.split()
-            if said[i:i + len(rel)] != rel:
-                continue
-            if not any(names.taxonomy.is_a(w, "person") is True for w in words_of(" ".join(said[2:i]))):
-                return None
-            found = _longest_grounded(said[i + len(rel):], names)
-            if found is None:
-                return None
-            return Question("what", found.id, "in" if relation in ("inside", "in") else
-                            "on" if relation in ("on", "on top of") else "at", "person")
-    return None
+    i, n, relation = at
+    if not any(names.taxonomy.is_a(w, "person") is True for w in words_of(" ".join(said[2:i]))):
+        return None
+    found = _longest_grounded(said[i + n:], names)
+    return None if found is None else Question("what", found.id, relation, "person")
 
 
 def _longest_grounded(words: Sequence[str], names: MapNames) -> Referent | None:
