@@ -42,7 +42,7 @@ from functools import cached_property
 
 from seal_cli.errors import SealError
 from seal_cli.frames.taxonomy import Taxonomy, class_key, class_words
-from seal_cli.language.english import NUMBERS, ROOM_WORDS, SOME_PERSON, is_room_word
+from seal_cli.language.english import NUMBERS, ROOM_WORDS, SOME_PERSON, VAGUE_NUMBERS, is_room_word
 from seal_cli.language.lexicon import noun_lemma
 from seal_cli.language.morphology import is_adjective
 from seal_cli.maps.model import SPEAKER, Map
@@ -185,7 +185,7 @@ class MapNames:
             number = place.name[len(base):].strip("_ ")
             # its number said as a word too: "table two" is table_2, as "table 2" is
             spoken_number = [f"{base} {w}" for w, n in NUMBERS.items() if number.isdigit() and n == int(number)
-                             and w not in ("couple", "several", "few", "many") and " " not in w]
+                             and (w == "one" or w not in VAGUE_NUMBERS) and " " not in w]     # "table one" too
             spelled = [base, place.name, *spoken_number, place.cls, *synonyms.get(place.cls, ())]
             mine = 3 + len(spoken_number)
             names = tuple(dict.fromkeys(w for w in map(words_of, spelled) if w))
