@@ -52,7 +52,7 @@ from rebuilt import write_or_check  # noqa: E402  scripts/rebuilt.py, beside thi
 from seal_cli.frames.library import Library  # noqa: E402
 from seal_cli.frames.reading import load_library  # noqa: E402
 from seal_cli.frames.taxonomy import class_key  # noqa: E402
-from seal_cli.language.chooser import Instance, features, fit, logits, scene_features  # noqa: E402
+from seal_cli.language.chooser import Instance, features, fit, logits, room_weights, scene_features  # noqa: E402
 from seal_cli.language.goals import NOWHERE, goal_features, goalless  # noqa: E402
 from seal_cli.language.goals import THRESHOLD as GOAL_THRESHOLD  # noqa: E402
 from seal_cli.language.grounding import PORTIONS, Vocabulary  # noqa: E402
@@ -91,6 +91,12 @@ STEP_OF = {"pick_heat_then_place_in_recep": "Heat", "pick_cool_then_place_in_rec
 """The step each ALFRED task type has (the others: none)."""
 L2 = 1.0
 """The chooser's L2 penalty (chosen on train trials held out from the fit, ``--dev 0.2 --l2 ...``)."""
+ROOM_SPREAD = 8.0
+"""How many phrases of one wording a floor plan counts as in the chooser's fit (``chooser.room_weights``): a room
+that said "island" forty times is one room's meaning, so a room not seen is judged by the rooms' mean, shrunk towards
+the pooled phrases (chosen on the phrases of train's held-out floor plans, ``scripts/chooser_features.py --hold-out
+floor-plans --rooms 8 3``: the object's coin tosses 2,494 → 2,512 of 2,732 right, the receptacle's 2,429 → 2,426 of
+2,658; None: every phrase counts 1, the fit before alfred31)."""
 SCENE_L2 = 10.0
 """The scene weights' L2 penalty (chosen on train's held-out floor plans, ``--dev 0.2 --hold-out floor-plans --scenes
 --scene-l2 ...``: 1.0 memorises the rooms, better on held-out trials of seen rooms and worse on unseen ones)."""
@@ -145,9 +151,10 @@ def labelled_conjunct(phrase: Phrase, label: str) -> Phrase | None:
 
 Counts = dict[str, Counter[str]]
 Context = dict[str, dict[str, Counter[str]]]
-Said = tuple[tuple[str, ...], str, frozenset[str], frozenset[str]]
-"""A labelled phrase as the chooser learns from it: its lemmas, the class meant, the sentence's words, and the
-class keys of its room (the floor plan's classes and the task's labelled ones; empty when the plan is unknown)."""
+Said = tuple[tuple[str, ...], str, frozenset[str], frozenset[str], str]
+"""A labelled phrase as the chooser learns from it: its lemmas, the class meant, the sentence's words, the
+class keys of its room (the floor plan's classes and the task's labelled ones; empty when the plan is unknown) and
+the floor plan's name."""
 
 
 def count(rows: Sequence[dict[str, str]], vocabulary: Vocabulary,
@@ -186,7 +193,7 @@ def count(rows: Sequence[dict[str, str]], vocabulary: Vocabulary,
             if lemmas is None:
                 continue
             others = words - set(lemmas)             # the sentence's other words, as grounding reads them
-            said_phrases.append((lemmas, label, words, room))
+            said_phrases.append((lemmas, label, words, room, row.get("floor_plan", "")))
             class_context.setdefault(label, Counter()).update(others)
             for size in (2, 1):
                 if len(lemmas) >= size:
@@ -197,11 +204,14 @@ def count(rows: Sequence[dict[str, str]], vocabulary: Vocabulary,
     return counts, seen, context, class_context, number, said_phrases
 
 
-def instances(said: Iterable[Said], counts: Counts, support: int = MIN_SUPPORT) -> list[Instance]:
+def instances(said: Iterable[Said], counts: Counts, support: int = MIN_SUPPORT,
+              spread: float | None = None) -> tuple[list[Instance], list[float] | None]:
     """The chooser's train instances: each labelled phrase whose wording (the longest with support,
-    as grounding picks it; the phrase itself left out of the counts) meant two classes or more."""
+    as grounding picks it; the phrase itself left out of the counts) meant two classes or more; and how much each
+    counts (``chooser.room_weights`` by its floor plan and wording, ``spread``: :data:`ROOM_SPREAD`; None: each 1)."""
     out = []
-    for lemmas, label, words, _ in said:
+    rooms: list[tuple[str, str]] = []
+    for lemmas, label, words, _, plan in said:
         for size in (2, 1):
             if len(lemmas) < size:
                 continue
@@ -214,8 +224,9 @@ def instances(said: Iterable[Said], counts: Counts, support: int = MIN_SUPPORT) 
                 candidates = tuple(class_key(k) for k in keys)
                 out.append(Instance(candidates, tuple(math.log(left[k]) for k in keys), keys.index(label),
                                     features(lemmas, words, candidates)))
+                rooms.append((plan, " ".join(lemmas[-size:])))
             break
-    return out
+    return out, None if spread is None else room_weights(rooms, spread)
 
 
 def scene_instances(said: Iterable[Said], counts: Counts, seen: Counts, weights: dict[str, dict[str, float]],
@@ -227,7 +238,7 @@ def scene_instances(said: Iterable[Said], counts: Counts, seen: Counts, weights:
     (:meth:`~seal_cli.language.wordusage.WordUsage.choose`) plus the chooser's logit (``weights``, by class
     key); the features are the room's classes (:func:`~seal_cli.language.chooser.scene_features`)."""
     out = []
-    for lemmas, label, words, room in said:
+    for lemmas, label, words, room, _ in said:
         if not room:
             continue
         for size in (2, 1):
@@ -281,11 +292,13 @@ def scenery(data: Path, classes: Sequence[str], floor_plans: Collection[str] | N
 
 def table(counts: Counts, seen: Counts, context: Context, class_context: Counts, number: Counts,
           said: list[Said], classes: Sequence[str], source: str, l2: float | None = L2,
-          scene_l2: float | None = SCENE_L2) -> dict[str, object]:
+          scene_l2: float | None = SCENE_L2, spread: float | None = ROOM_SPREAD) -> dict[str, object]:
     """The table's sections; ``l2``: the chooser's penalty (None: no chooser, the naive Bayes context);
-    ``scene_l2``: the scene weights' (None: none)."""
+    ``scene_l2``: the scene weights' (None: none); ``spread``: how the chooser's phrases count by their room
+    (:data:`ROOM_SPREAD`; None: each 1)."""
     spelling = {class_key(c): c for c in classes}
-    fitted = {} if l2 is None else fit(instances(said, counts), l2)
+    chosen, counted = instances(said, counts, spread=spread)
+    fitted = {} if l2 is None else fit(chosen, l2, weights=counted)
     weights = {f: {spelling[k]: w for k, w in by.items()} for f, by in fitted.items()}
     in_scene = {} if l2 is None or scene_l2 is None else fit(scene_instances(said, counts, seen, fitted), scene_l2)
     scene_weights = {f: {spelling[k]: w for k, w in by.items()} for f, by in in_scene.items()}

@@ -12,6 +12,12 @@ held-out phrases themselves: how much the sentence's words could tell at best.
 
     python scripts/chooser_features.py                               # held-out trials (--dev 0.2)
     python scripts/chooser_features.py --hold-out floor-plans --sets shipped near
+    python scripts/chooser_features.py --hold-out floor-plans --sets shipped --rooms 8 3
+
+``--rooms S ...`` also fits each set with its phrases weighed by their floor plan (``chooser.room_weights``, spread
+S: a room that said a wording many times counts as fewer phrases; ``build_word_classes.ROOM_SPREAD``). The set
+``room`` adds the sentence's scene type (kitchen, living room, bedroom, bathroom: its floor plan's), which the goal
+scorer never gives a parser: a ceiling of what knowing the kind of room would add.
 """
 
 from __future__ import annotations
@@ -34,7 +40,7 @@ from build_word_classes import fields, held_out, parsed, read_rows, wording  # n
 
 from seal_cli.frames.reading import load_library  # noqa: E402
 from seal_cli.frames.taxonomy import class_key  # noqa: E402
-from seal_cli.language.chooser import Instance, features, fit, logits  # noqa: E402
+from seal_cli.language.chooser import Instance, features, fit, logits, room_weights  # noqa: E402
 from seal_cli.language.grounding import Vocabulary  # noqa: E402
 from seal_cli.language.morphology import noun_lemma  # noqa: E402
 from seal_cli.language.wordusage import WordUsage, context_words  # noqa: E402
@@ -58,6 +64,7 @@ def phrases(rows: Sequence[dict[str, str]], held: set[str]) -> list[Said]:
             field = "object" if label == row["object"] else "receptacle" if label == row["receptacle"] else "other"
             out.append({"lemmas": lemmas, "label": label, "words": context_words(text), "text": text,
                         "phrase": phrase.text or "", "field": field, "dev": row["task_id"] in held,
+                        "plan": row.get("floor_plan", ""), "scene": row.get("scene_type", ""),
                         "frames": sorted({f.frame for f in parse.frames}),
                         "classes": sorted({q.cls for q in others if q.cls and q is not phrase})})
     return out
@@ -86,10 +93,12 @@ SETS: dict[str, Callable[[Said, tuple[str, ...]], tuple[str, ...]]] = {
         f"c:{class_key(k)}" for k in s["classes"] if class_key(k) not in c),
     "frames": lambda s, c: features(s["lemmas"], s["words"], c) + tuple(f"f:{f}" for f in s["frames"]),
     "field": lambda s, c: features(s["lemmas"], s["words"], c) + (f"e:{s['field']}",),
+    "room": lambda s, c: features(s["lemmas"], s["words"], c) + (f"r:{s.get('scene', '')}",),
 }
 """The feature sets tried: the shipped one (``w:`` the sentence's other words, ``m:`` the phrase's modifiers) and it
 with the words near the phrase, the sentence's word pairs, the rules' classes of the sentence's other phrases, the
-frames the parse evokes, or the field the phrase fills (which a parser could only guess)."""
+frames the parse evokes, or the field the phrase fills (which a parser could only guess), or the kind of room
+(which the goal scorer does not give)."""
 
 
 def instances(said: Sequence[Said], counts: dict[str, Counter[str]], feats: Callable[..., tuple[str, ...]],
@@ -106,8 +115,9 @@ def instances(said: Sequence[Said], counts: dict[str, Counter[str]], feats: Call
             if len(left) >= 2 and s["label"] in left:
                 keys = sorted(left)
                 candidates = tuple(class_key(k) for k in keys)
-                out.append((s, Instance(candidates, tuple(math.log(left[k]) for k in keys), keys.index(s["label"]),
-                                        feats(s, candidates))))
+                out.append(({**s, "wording": " ".join(lemmas[-size:])},
+                            Instance(candidates, tuple(math.log(left[k]) for k in keys), keys.index(s["label"]),
+                                     feats(s, candidates))))
             break
     return out
 
@@ -127,7 +137,13 @@ def main() -> int:
     ap.add_argument("--hold-out", choices=("trials", "floor-plans"), default="trials")
     ap.add_argument("--sets", nargs="*", default=[*SETS, "ceiling"], choices=[*SETS, "ceiling"])
     ap.add_argument("--l2", type=float, default=1.0)
+    ap.add_argument("--rooms", type=float, nargs="*", default=[],
+                    help="also fit each set with its phrases weighed by floor plan, with each of these spreads")
     args = ap.parse_args()
+    for spread in args.rooms:
+        if not spread > 0:
+            print(f"error: --rooms {spread:g}: expected a spread above 0", file=sys.stderr)
+            return 1
     rows = [r for r in read_rows(ROOT.parent / "shared" / "data" / "alfred" / "goals_train.tsv")
             if r.get("split", "train") == "train"]
     said = phrases(rows, held_out(rows, args.dev, args.hold_out))
@@ -141,13 +157,23 @@ def main() -> int:
     for name in args.sets:
         feats = SETS["shipped" if name == "ceiling" else name]
         held = instances(dev, counts, feats, False)
-        weights = fit([i for _, i in (held if name == "ceiling" else instances(fitted, counts, feats, True))], args.l2)
-        right, total = scored(weights, held), Counter(s["field"] for s, _ in held)
-        prior = scored({}, held)
-        print(f"{name:<9} " + "  ".join(f"{f} {right[f]} / {total[f]} (prior {prior[f]})"
-                                         for f in ("object", "receptacle", "other")),
-              f" weights {sum(len(w) for w in weights.values())}", flush=True)
+        train = held if name == "ceiling" else instances(fitted, counts, feats, True)
+        for spread in [None, *([] if name == "ceiling" else args.rooms)]:
+            weights = fit([i for _, i in train], args.l2,
+                          weights=None if spread is None else room_weights(rooms(train), spread))
+            right, total = scored(weights, held), Counter(s["field"] for s, _ in held)
+            prior = scored({}, held)
+            shown = name if spread is None else f"{name}, rooms {spread:g}"
+            print(f"{shown:<9} " + "  ".join(f"{f} {right[f]} / {total[f]} (prior {prior[f]})"
+                                             for f in ("object", "receptacle", "other")),
+                  f" weights {sum(len(w) for w in weights.values())}", flush=True)
     return 0
+
+
+def rooms(made: Sequence[tuple[Said, Instance]]) -> list[tuple[str, str]]:
+    """Each instance's floor plan and the wording its prior was counted under (the longest with support, as
+    :func:`instances` picks it), for ``chooser.room_weights``."""
+    return [(s.get("plan", ""), s["wording"]) for s, _ in made]
 
 
 if __name__ == "__main__":

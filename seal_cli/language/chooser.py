@@ -22,7 +22,7 @@ from collections import Counter
 from collections.abc import Iterable, Mapping, Sequence
 from dataclasses import dataclass
 
-__all__ = ["Instance", "features", "fit", "logits", "posterior", "scene_features", "sentence_features"]
+__all__ = ["Instance", "features", "fit", "logits", "posterior", "room_weights", "scene_features", "sentence_features"]
 
 
 def features(lemmas: Sequence[str], context: Iterable[str], candidates: Iterable[str] = ()) -> tuple[str, ...]:
@@ -88,6 +88,20 @@ def posterior(prior: Mapping[str, int], weights: Mapping[str, Mapping[str, float
     return {k: math.exp(v - top) / total for k, v in scores.items()}
 
 
+def room_weights(said: Sequence[tuple[str, str]], spread: float) -> list[float]:
+    """How much each instance counts when ``said`` gives each one's room and wording: a room that said a
+    wording ``n`` times counts as ``(1 + spread) · n / (n + spread)`` instances of it, each ``(1 + spread) /
+    (n + spread)`` (one said once counts 1). What a word means is partly the room's (one floor plan's "island" is
+    its dining table, the next one's its counter top), and a room that said it forty times is still one room: the
+    estimate of a room not seen is the rooms' mean, shrunk to the phrases' pooled count by ``spread`` (the
+    strength of a Dirichlet prior over the rooms' meanings; large: every phrase counts 1, as pooled; near 0: every
+    room counts 1)."""
+    if not spread > 0:
+        raise ValueError(f"spread {spread}: expected a number above 0")
+    times = Counter(said)
+    return [(1.0 + spread) / (times[key] + spread) for key in said]
+
+
 @dataclass(frozen=True)
 class Instance:
     """One phrase of a train split: the classes its wording can mean (``candidates``), the log of each
@@ -102,7 +116,7 @@ class Instance:
 
 def fit(instances: Sequence[Instance], l2: float = 1.0, min_count: int = 2,
         digits: int = 3, min_label: int = 0, groups: Sequence[str] | None = None,
-        min_groups: int = 0) -> dict[str, dict[str, float]]:
+        min_groups: int = 0, weights: Sequence[float] | None = None) -> dict[str, dict[str, float]]:
     """The weights ``{feature: {class key: weight}}`` maximising the instances' log-likelihood minus
     ``l2 / 2`` times the squared weights. A (feature, class) pair gets a weight when the feature was
     said with the class among the candidates in at least ``min_count`` instances, and with the class
@@ -110,20 +124,25 @@ def fit(instances: Sequence[Instance], l2: float = 1.0, min_count: int = 2,
     pairs seen together: its table stays small) and in at least ``min_groups`` of the instances'
     ``groups`` (one per instance, such as the room it was said in: a word that went with a class in one
     room only says more of that room than of the word); weights are rounded to ``digits`` decimals and
-    those that round to zero left out. Deterministic (L-BFGS from zero)."""
+    those that round to zero left out. ``weights``: how much each instance counts in the likelihood (one per
+    instance, above 0; None: 1 each), so that a room that said one word many times counts as one room
+    (:func:`room_weights`). Deterministic (L-BFGS from zero)."""
     import numpy as np
     from scipy.optimize import minimize
     from scipy.sparse import csr_matrix
 
     if groups is not None and len(groups) != len(instances):
         raise ValueError(f"{len(instances)} instances have {len(groups)} groups")
-    kept = [(i, g) for i, g in zip(instances, groups if groups is not None else [""] * len(instances), strict=True)
-            if len(i.candidates) >= 2]
-    usable = [i for i, _ in kept]
+    if weights is not None and (len(weights) != len(instances) or not all(w > 0 for w in weights)):
+        raise ValueError(f"{len(instances)} instances need as many weights, each above 0")
+    each = weights if weights is not None else [1.0] * len(instances)
+    kept = [(i, g, w) for i, g, w in zip(instances, groups if groups is not None else [""] * len(instances), each,
+                                         strict=True) if len(i.candidates) >= 2]
+    usable = [i for i, _, _ in kept]
     seen: Counter[tuple[str, str]] = Counter()
     meant: Counter[tuple[str, str]] = Counter()
     meant_in: dict[tuple[str, str], set[str]] = {}
-    for inst, where in kept:
+    for inst, where, _ in kept:
         for f in set(inst.features):
             meant[(f, inst.candidates[inst.label])] += 1
             meant_in.setdefault((f, inst.candidates[inst.label]), set()).add(where)
@@ -164,6 +183,8 @@ def fit(instances: Sequence[Instance], l2: float = 1.0, min_count: int = 2,
     group = np.repeat(np.arange(len(starts)), np.diff(np.append(first, len(offsets))))
     target = np.zeros(len(offsets))
     target[np.asarray(gold)] = 1.0
+    counted = None if weights is None else np.asarray([w for _, _, w in kept], dtype=float)
+    by_row = None if counted is None else counted[group]          # each instance's weight, and each row's
 
     def loss(w: np.ndarray) -> tuple[float, np.ndarray]:
         z = design @ w + base
@@ -171,9 +192,13 @@ def fit(instances: Sequence[Instance], l2: float = 1.0, min_count: int = 2,
         e = np.exp(z - top[group])
         total = np.add.reduceat(e, first)
         log_norm = np.log(total) + top
-        nll = float(np.sum(log_norm) - np.sum(z[target > 0]))
         p = e / total[group]
-        grad = design.T @ (p - target) + l2 * w
+        if counted is None or by_row is None:
+            nll = float(np.sum(log_norm) - np.sum(z[target > 0]))
+            grad = design.T @ (p - target) + l2 * w
+        else:
+            nll = float(counted @ log_norm - counted @ z[target > 0])
+            grad = design.T @ ((p - target) * by_row) + l2 * w
         return nll + 0.5 * l2 * float(w @ w), grad
 
     result = minimize(loss, np.zeros(len(pairs)), jac=True, method="L-BFGS-B",

@@ -7,7 +7,7 @@ import math
 import pytest
 
 from seal_cli.frames.reading import Library
-from seal_cli.language.chooser import Instance, features, fit, logits
+from seal_cli.language.chooser import Instance, features, fit, logits, room_weights
 from seal_cli.language.grounding import Vocabulary
 from seal_cli.language.parser import parse_command
 from seal_cli.language.wordusage import WordUsage
@@ -58,6 +58,33 @@ def test_a_word_that_went_with_a_class_in_one_room_only_gets_no_weight() -> None
     assert fit(cups, l2=1.0, groups=rooms, min_groups=0) == fit(cups, l2=1.0)    # 0: no room asked for
     with pytest.raises(ValueError, match="40 instances have 2 groups"):
         fit(cups, groups=["a", "b"], min_groups=2)
+
+
+def test_a_room_that_said_a_word_many_times_counts_less_than_as_many_rooms() -> None:
+    # one room said "island" four times (its dining table), two rooms once each (their counter tops)
+    said = [("plan1", "island")] * 4 + [("plan2", "island"), ("plan3", "island"), ("plan1", "table")]
+    w = room_weights(said, spread=2.0)
+    assert w[0] == pytest.approx(3 / 6) and sum(w[:4]) == pytest.approx(2.0)    # (1 + 2) · 4 / (4 + 2)
+    assert w[4] == w[5] == w[6] == pytest.approx(1.0)                           # said once: counts 1
+    assert room_weights(said, spread=1e9) == pytest.approx([1.0] * 7)          # large spread: pooled
+    with pytest.raises(ValueError, match="spread 0"):
+        room_weights(said, spread=0)
+
+
+def test_the_fit_weighs_each_instance_by_its_weight() -> None:
+    # twenty "sink" cups from one room and one "sink" mug from another: weighed down to a few, the one room's
+    # cups say less against the mug
+    cups = [Instance(("cup", "mug"), (0.0, 0.0), 0, ("w:sink",)) for _ in range(20)]
+    mug = Instance(("cup", "mug"), (0.0, 0.0), 1, ("w:sink",))
+    pooled = fit([*cups, mug], l2=1.0)
+    weighed = fit([*cups, mug], l2=1.0, weights=[0.1] * 20 + [1.0])
+    lean = pooled["w:sink"]["cup"] - pooled["w:sink"].get("mug", 0.0)
+    assert 0 < weighed["w:sink"]["cup"] - weighed["w:sink"].get("mug", 0.0) < lean
+    assert fit([*cups, mug], l2=1.0, weights=[1.0] * 21) == pooled             # every weight 1: unweighed
+    with pytest.raises(ValueError, match="as many weights"):
+        fit([*cups, mug], weights=[1.0])
+    with pytest.raises(ValueError, match="each above 0"):
+        fit([*cups, mug], weights=[0.0] * 21)
 
 
 def test_the_weights_decide_against_the_counts_prior(library: Library) -> None:
