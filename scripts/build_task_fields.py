@@ -15,8 +15,9 @@ trust was chosen there, never on a valid split. With ``--learn`` the combination
 (``taskfields.fit_trust`` on one half of the held-out sentences, scored on the other half, and the other way
 round; then the weights learned on all of them are printed), by the likelihood (``taskfields.fit_trust``) and by the
 count of right values (``taskfields.fit_trust_count``). ``--l2`` and ``--min-rooms`` fit the words' model otherwise
-too (its L2 penalty; the least number of floor plans a word must have been said in with a value to weigh it) and
-score each with the first trust.
+too (its L2 penalty; the least number of floor plans a word must have been said in with a value to weigh it), and
+``--rooms S`` with each sentence weighed by how often its floor plan had the field's value (``chooser.room_weights``),
+and score each with the first trust.
 """
 
 from __future__ import annotations
@@ -124,8 +125,10 @@ def dev(args: argparse.Namespace, bwc: ModuleType, rows: list[dict[str, str]]) -
                       bwc.SCENE_L2)
     usage = bwc.usage_of(bwc.with_stack_goals(bwc.with_steps(table, fit_rows, vocabulary), fit_rows, vocabulary))
     tried = vocabulary.with_usage(usage)
-    settings = [(l2, rooms) for l2 in args.l2 for rooms in args.min_rooms]
-    models = {setting: fit_fields(fit_rows, l2=setting[0], min_rooms=setting[1]) for setting in settings}
+    settings = [(l2, rooms, None) for l2 in args.l2 for rooms in args.min_rooms]
+    settings += [(args.l2[0], args.min_rooms[0], spread) for spread in args.rooms]
+    models = {setting: fit_fields(fit_rows, l2=setting[0], min_rooms=setting[1], spread=setting[2])
+              for setting in settings}
     model = models[settings[0]]
     scorer = bwc.scorer(data)
     library = bwc.load_library()
@@ -161,9 +164,9 @@ def dev(args: argparse.Namespace, bwc: ModuleType, rows: list[dict[str, str]]) -
     for i, trust in enumerate(args.trusts):
         shown = "shipped" if trust == dict(TRUST) else ",".join(f"{trust[f]:g}" for f in FIELDS)
         show("reread, trust " + shown, lambda row, t=trust: replace(model, trust=t), keep=i == 0)
-    for l2, rooms in settings[1:]:         # the words' model fitted otherwise, with the first trust
-        show(f"reread, l2 {l2:g}, min rooms {rooms}",
-             lambda row, m=models[(l2, rooms)]: replace(m, trust=args.trusts[0]))
+    for l2, rooms, spread in settings[1:]:         # the words' model fitted otherwise, with the first trust
+        show(f"reread, l2 {l2:g}, min rooms {rooms}" + ("" if spread is None else f", rooms weighed {spread:g}"),
+             lambda row, m=models[(l2, rooms, spread)]: replace(m, trust=args.trusts[0]))
     if args.learn:
         # the combination learned on the held-out parses: scored on each half by the weights learned on the other
         examples = {id(row): trust_examples(model, row, text, parse, tried) for row, text, parse in parsed}
@@ -225,6 +228,9 @@ def main() -> int:
     ap.add_argument("--min-rooms", type=int, nargs="+", default=[0],
                     help="with --dev: the least number of floor plans a word must have been said in with a value "
                          "to weigh it (taskfields.fit_fields' min_rooms), those to try")
+    ap.add_argument("--rooms", type=float, nargs="*", default=[],
+                    help="with --dev: also fit the words' model with each sentence weighed by how often its floor plan "
+                         "had the field's value (chooser.room_weights), with each of these spreads")
     args = ap.parse_args()
 
     goals = args.data / "alfred" / "goals_train.tsv"
@@ -237,6 +243,10 @@ def main() -> int:
     for x in args.l2:
         if not x > 0:
             print(f"error: --l2 {x:g}: expected a penalty above 0", file=sys.stderr)
+            return 1
+    for spread in args.rooms:
+        if not spread > 0:
+            print(f"error: --rooms {spread:g}: expected a spread above 0", file=sys.stderr)
             return 1
     for k in args.min_rooms:
         if k < 0:

@@ -57,7 +57,7 @@ from types import MappingProxyType
 from typing import TYPE_CHECKING
 
 from seal_cli.frames.taxonomy import class_key, class_words
-from seal_cli.language.chooser import Instance, fit, posterior
+from seal_cli.language.chooser import Instance, fit, posterior, room_weights
 from seal_cli.language.reference import back_unplaced
 from seal_cli.language.values import Evoked, Parse, Phrase
 
@@ -588,12 +588,14 @@ def _written(parse: Parse, library: Library, vocabulary: Vocabulary, reading: Re
 
 
 def fit_fields(rows: Sequence[Mapping[str, str]], l2: float = L2, trust: Mapping[str, float] = TRUST,
-               min_rooms: int = 0) -> FieldModel:
+               min_rooms: int = 0, spread: float | None = None) -> FieldModel:
     """The model fitted on ALFRED goal rows (``goal_sentence``, ``task_type``, ``object``, ``receptacle``,
     ``mrecep``): each field's values counted as the prior, its weights by :func:`~seal_cli.language.chooser.fit`
     (every value a candidate; a gram weighs a value it was said with in at least :data:`MIN_COUNT` sentences, and
     in at least ``min_rooms`` floor plans, the rows' ``floor_plan``: 0 ships, as 2 and 3 moved nothing on held-out
-    floor plans, ``docs/language.md`` alfred28)."""
+    floor plans, ``docs/language.md`` alfred28). ``spread``: each sentence weighed by how often its floor plan
+    had the field's value (:func:`~seal_cli.language.chooser.room_weights`: a room that used its dining table in forty
+    tasks counts as fewer; None: each sentence 1, as shipped)."""
     grams = [sentence_grams(" ".join(r["goal_sentence"].split())) for r in rows]
     priors: dict[str, dict[str, int]] = {}
     weights: dict[str, dict[str, dict[str, float]]] = {}
@@ -604,8 +606,11 @@ def fit_fields(rows: Sequence[Mapping[str, str]], l2: float = L2, trust: Mapping
         offsets = tuple(math.log(counts[v]) for v in values)
         instances = [Instance(values, offsets, values.index(v), g) for v, g in zip(labels, grams, strict=True)]
         priors[name] = dict(sorted(counts.items()))
+        rooms = [r.get("floor_plan", "") for r in rows]
         weights[name] = fit(instances, l2=l2, min_count=MIN_COUNT, digits=2, min_label=MIN_COUNT,
-                            groups=[r.get("floor_plan", "") for r in rows], min_groups=min_rooms)
+                            groups=rooms, min_groups=min_rooms,
+                            weights=None if spread is None else room_weights(list(zip(rooms, labels, strict=True)),
+                                                                             spread))
     return FieldModel(priors, weights, trust)
 
 
