@@ -73,6 +73,12 @@ def word_classes() -> ModuleType:
     return module
 
 
+def bwc_spread() -> float | None:
+    """The chooser's room spread as ``build_word_classes.py`` ships it (:data:`build_word_classes.ROOM_SPREAD`)."""
+    spread: float | None = word_classes().ROOM_SPREAD
+    return spread
+
+
 def differences(shipped: object, built: object, path: str = "") -> list[str]:
     """Where the shipped model differs from the one built: any count, any value, or a weight by more than
     :data:`TOLERANCE` (a weight missing on one side counts as 0)."""
@@ -122,7 +128,7 @@ def dev(args: argparse.Namespace, bwc: ModuleType, rows: list[dict[str, str]]) -
     dev_rows = [r for r in rows if r["task_id"] in held]
     print(f"fit {len(fit_rows)} sentences, dev {len(dev_rows)} sentences ({len(held)} {args.hold_out})", flush=True)
     table = bwc.table(*bwc.count(fit_rows, vocabulary, bwc.scene_classes(data, classes)), classes, "dev", bwc.L2,
-                      bwc.SCENE_L2)
+                      bwc.SCENE_L2, spread=args.chooser_rooms)
     usage = bwc.usage_of(bwc.with_stack_goals(bwc.with_steps(table, fit_rows, vocabulary), fit_rows, vocabulary))
     tried = vocabulary.with_usage(usage)
     settings = [(l2, rooms, None) for l2 in args.l2 for rooms in args.min_rooms]
@@ -231,6 +237,9 @@ def main() -> int:
     ap.add_argument("--rooms", type=float, nargs="*", default=[],
                     help="with --dev: also fit the words' model with each sentence weighed by how often its floor plan "
                          "had the field's value (chooser.room_weights), with each of these spreads")
+    ap.add_argument("--chooser-rooms", type=float, default=bwc_spread(),
+                    help="with --dev: fit the word-class chooser with each phrase weighed by its floor plan "
+                         "(chooser.room_weights) with this spread (default: build_word_classes.ROOM_SPREAD: shipped)")
     args = ap.parse_args()
 
     goals = args.data / "alfred" / "goals_train.tsv"
@@ -244,7 +253,7 @@ def main() -> int:
         if not x > 0:
             print(f"error: --l2 {x:g}: expected a penalty above 0", file=sys.stderr)
             return 1
-    for spread in args.rooms:
+    for spread in [*args.rooms, *([] if args.chooser_rooms is None else [args.chooser_rooms])]:
         if not spread > 0:
             print(f"error: --rooms {spread:g}: expected a spread above 0", file=sys.stderr)
             return 1
