@@ -155,6 +155,24 @@ def test_the_model_is_learned_from_labelled_sentences() -> None:
     assert load_field_model_of(model_json(model, "test")) == model
 
 
+def test_a_room_that_had_one_value_in_many_tasks_counts_as_fewer_when_its_sentences_are_weighed() -> None:
+    # one floor plan says "table" for its dining table in twelve tasks; two others say it for their side tables
+    dining = [{"goal_sentence": f"put the apple on the table {k}", "task_type": SIMPLE, "object": "Apple",
+               "receptacle": "DiningTable", "mrecep": "", "floor_plan": "FloorPlan1"} for k in range(12)]
+    side = [{"goal_sentence": f"put the book on the table {k}", "task_type": SIMPLE, "object": "Book",
+             "receptacle": "SideTable", "mrecep": "", "floor_plan": f"FloorPlan30{k % 3}"} for k in range(3)]
+    pooled, weighed = fit_fields(dining + side), fit_fields(dining + side, spread=1.0)
+    assert pooled.priors == weighed.priors                          # the prior stays the tasks' count
+    grams = sentence_grams("put it on the table")
+
+    def lean(model: FieldModel) -> float:
+        p = model.probabilities("receptacle", grams)
+        return p["dining_table"] / p["side_table"]
+
+    assert lean(weighed) < lean(pooled)
+    assert fit_fields(dining + side, spread=1e9) == pooled            # a spread that large: each sentence counts 1
+
+
 def load_field_model_of(text: str) -> FieldModel:
     import tempfile
 

@@ -40,7 +40,8 @@ def test_a_missing_data_folder_or_a_bad_fraction_is_named(tmp_path: Path, shared
     assert done.returncode == 1
     assert str(tmp_path / "alfred" / "goals_train.tsv") in done.stderr and "Traceback" not in done.stderr
     for args in (["--dev", "2"], ["--dev", "0.2", "--trust", "1,2"], ["--dev", "0.2", "--l2", "1", "0"],
-                 ["--dev", "0.2", "--min-rooms", "-1"]):
+                 ["--dev", "0.2", "--min-rooms", "-1"], ["--dev", "0.2", "--rooms", "0"],
+                 ["--dev", "0.2", "--chooser-rooms", "-3"]):
         done = subprocess.run([sys.executable, str(SCRIPT), "--data", str(shared_data), *args],
                               capture_output=True, text=True, timeout=120)
         assert done.returncode == 1 and "Traceback" not in done.stderr, done.stderr
