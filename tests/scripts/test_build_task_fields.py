@@ -63,3 +63,19 @@ def test_check_names_a_model_the_data_no_longer_gives_and_writes_nothing(shared_
         model["priors"]["type"]["pick_and_place_simple"] += 1
         return "/priors/type/pick_and_place_simple: "
     check_on_a_sample(SCRIPT, shared_data, tmp_path, stale)
+
+
+def test_the_interval_resamples_the_held_out_floor_plans_not_the_sentences() -> None:
+    resampled = builder().resampled
+    # four floor plans of ten sentences: two all right, two all wrong; a share of 0.5 that the rooms decide
+    units = [f"plan{k // 10}" for k in range(40)]
+    right = [k < 20 for k in range(40)]
+    low, high = resampled(units, right)
+    assert low <= 0.5 <= high and high - low >= 0.5                       # four rooms: a wide interval
+    spread = resampled([f"s{k}" for k in range(40)], right)                 # forty independent sentences: narrower
+    assert spread[1] - spread[0] < high - low
+    assert resampled(units, right) == (low, high)                           # deterministic
+    assert resampled(units, right, right) == (0.0, 0.0)                     # a reading against itself: no difference
+    better = [True] * 40
+    assert resampled(units, better, right)[0] >= 0.0
+    assert resampled([], []) == (0.0, 0.0)
