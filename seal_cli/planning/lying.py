@@ -49,16 +49,14 @@ def another_meant(binding: Binding, thing: str, kind: str, *, held: str | None, 
 
 
 def goal_among(binding: Binding, thing: str, kind: str, *, held: str | None, among: Sequence[str],
-               lies_in: Callable[[str], str | None], elsewhere: bool = False) -> str | None:
+               lies_in: Callable[[str], str | None]) -> str | None:
     """The place, of the ``among`` places the command's goal was one of and did not tell apart (several places of one
     class), that a thing of ``kind`` lies in already: what the frame asks is so there ("put the milk in the fridge",
     a milk in each fridge). ``lies_in(place)``: the thing of the kind lying in that place, or None. None when the
     frame does not take ``thing`` up as its theme, the robot holds one of its kind (it puts down the one it holds),
-    none lies in any of them, or one lies in none of them (``elsewhere``): nobody asks for what is so already, so
-    that one is meant (e2e32: "put the brush in the sink", a brush in the art room's sink and one on its table, the
-    table's; the plan was empty). Of several, the one ``thing`` itself lies in, else the goal, else the first."""
+    or none lies in any of them. Of several, the one ``thing`` itself lies in, else the goal, else the first."""
     if (len(among) < 2 or not binding.frame.needs_held("theme") or binding.elements.get("theme") != thing
-            or held == kind or elsewhere):
+            or held == kind):
         return None
     goal = binding.elements.get("goal")
     lying = {p: lies_in(p) for p in among}     # the thing itself where it lies first, then the goal, then the others

@@ -1650,7 +1650,10 @@ def the_goals_said_among(commanded: list[Binding], things: Things) -> dict[Bindi
     milk in the fridge", a fridge in the shop and one in the kitchen), with those places; where the map has a thing of
     the kind in one of them already, the frame's goal is that place and the command's name of the thing trades names
     with it, so the plan says it is so already (:func:`seal_cli.planning.lying.goal_among`, e2e28: the plan moved the
-    kitchen's milk to the shop's fridge, each fridge holding a milk). ``commanded`` is changed in place."""
+    kitchen's milk to the shop's fridge, each fridge holding a milk). Not for a thing a done command moved: "put it in
+    the cupboard" after `--done 'take the ball to the classroom'` is that ball, not the one left in the hall's cupboard
+    (e2e32: the plan said it was so already). A goal said "back" is the place the thing came from, of those
+    (:func:`_came_from`). ``commanded`` is changed in place."""
     from seal_cli.planning.lying import goal_among
 
     m = things.map
@@ -1682,12 +1685,8 @@ def the_goals_said_among(commanded: list[Binding], things: Things) -> dict[Bindi
             commanded[index] = again
             things.one_away[things.one_away.index(binding)] = again
             continue
-        outside = [n for n in ones if n in things.points and not any(things.lies_in(n, p) for p in among)]
-        place = None if back else goal_among(binding, theme, cls, held=key, among=among, lies_in=lying,
-                                             elsewhere=bool(outside))
-        if (not back and outside and theme not in outside
-                and goal_among(binding, theme, cls, held=key, among=among, lies_in=lying) is not None):
-            things.swap(theme, _nearest_first(outside, binding, commanded, things)[0])  # one in no such place
+        moved = theme in things.taken_from      # the one a done command moved ("put it in the cupboard"): no other
+        place = None if back or moved else goal_among(binding, theme, cls, held=key, among=among, lies_in=lying)
 
         if len(among) > 1 and not back:     # "back on the bookshelf": one not on any (the_ones_not_there)
             found[binding] = among
