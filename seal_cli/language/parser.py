@@ -301,7 +301,8 @@ def _phrasal_error(text: str, lexicon: Lexicon, verb: Word, particle: Word) -> C
     unit = str(verb.info)
     thing = _object_said(text, verb, particle)
     example = f"{said} {thing}" if thing else f"{verb.text.lower()} it {particle.lower}"
-    hint = f"; to {unit} a thing somewhere, say where it goes (\"{example} on the ...\")" if unit in lexicon.puts else ""
+    hint = f"; to {unit} a thing somewhere, say where it goes (\"{example} on the ...\")" \
+        if unit in lexicon.puts else ""
     return CommandError(f"{said!r} is a verb of its own, not {unit!r}: no frame of the library does it{hint}; "
                         f"the robot can {_either(list(lexicon.can))}", verb.start + 1, text, ["a verb"])
 
