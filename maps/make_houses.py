@@ -6,7 +6,8 @@
 breakfast, and ``studio.yaml``, e2e26's held-out open-plan studio flat, and ``corner_shop.yaml``, e2e27's held-out
 corner shop with its back rooms, and ``houseboat.yaml``, e2e28's held-out wide-beam houseboat, and ``library.yaml``, e2e29's held-out
 branch library, and ``bakery.yaml``, e2e30's held-out bakery with its bakehouse and back rooms, and ``workshop.yaml``, e2e31's held-out
-joinery workshop with its showroom, finishing room and back rooms (run once; the PGMs are committed next to this script).
+joinery workshop with its showroom, finishing room and back rooms, and ``school.yaml``, e2e32's held-out primary school
+block along one corridor (run once; the PGMs are committed next to this script).
 
     python maps/make_houses.py          # rewrites maps/<house>.pgm for each of HOUSES
 
@@ -341,8 +342,25 @@ WORKSHOP = House(
     ),
 )
 
+SCHOOL = House(
+    "school", (0.0, 0.0, 18.0, 10.0),
+    walls=(
+        ((3.0, 0.0, 3.0, 10.0), ((4.6, 5.9), (7.5, 8.5))),     # entrance | corridor, entrance | office
+        ((3.0, 4.5, 18.0, 4.5), ((5.0, 6.0), (10.5, 11.5), (14.5, 15.3), (16.6, 17.4))),  # the south rooms' doors
+        ((3.0, 6.0, 18.0, 6.0), ((4.0, 5.0), (7.5, 8.5), (12.0, 14.0))),  # office, staff room, hall (double doors)
+        ((9.0, 0.0, 9.0, 4.5), ()),                             # classroom | art room
+        ((14.0, 0.0, 14.0, 4.5), ()),                           # art room | toilets
+        ((16.0, 0.0, 16.0, 4.5), ()),                           # toilets | storeroom
+        ((6.0, 6.0, 6.0, 10.0), ()),                            # office | staff room
+        ((10.0, 6.0, 10.0, 10.0), ()),                          # staff room | hall
+    ),
+    blocks=(
+        (10.6, 9.3, 11.8, 9.85),   # the piano against the hall's north wall
+    ),
+)
+
 HOUSES = (COTTAGE, OFFICE_FLOOR, CAFE, CLINIC, FARMHOUSE, TERRACE, BUNGALOW, LODGE, FLAT, CAREHOME, STUDENT_HOUSE,
-          GUESTHOUSE, STUDIO, CORNER_SHOP, HOUSEBOAT, LIBRARY, BAKERY, WORKSHOP)
+          GUESTHOUSE, STUDIO, CORNER_SHOP, HOUSEBOAT, LIBRARY, BAKERY, WORKSHOP, SCHOOL)
 
 
 def draw(house: House) -> np.ndarray:

@@ -18,6 +18,7 @@ A :class:`CommandParser` (one per frame library) runs the stages, one module eac
 
 from __future__ import annotations
 
+import re
 from collections.abc import Iterable, Iterator, Sequence
 from dataclasses import replace
 from typing import TYPE_CHECKING, Any
@@ -293,10 +294,26 @@ def _some_verbs(lexicon: Lexicon, near: str | None = None) -> str:
 
 
 def _phrasal_error(text: str, lexicon: Lexicon, verb: Word, particle: Word) -> CommandError:
-    """A verb made another by its particle ("hang up the phone"): refused at the verb, with what the robot can do."""
+    """A verb made another by its particle ("hang up the phone"): refused at the verb, with what the robot can do, and,
+    for a verb that puts a thing somewhere, how to say the verb's own sense: with where the thing goes ("hang up my
+    jacket on the coat rack" is a Place; e2e32: "hang up my jacket" said only what the robot can do)."""
     said = f"{verb.text.lower()} {particle.lower}"
-    return CommandError(f"{said!r} is a verb of its own, not {str(verb.info)!r}: no frame of the library does it; "
+    unit = str(verb.info)
+    thing = _object_said(text, verb, particle)
+    example = f"{said} {thing}" if thing else f"{verb.text.lower()} it {particle.lower}"
+    hint = f"; to {unit} a thing somewhere, say where it goes (\"{example} on the ...\")" \
+        if unit in lexicon.puts else ""
+    return CommandError(f"{said!r} is a verb of its own, not {unit!r}: no frame of the library does it{hint}; "
                         f"the robot can {_either(list(lexicon.can))}", verb.start + 1, text, ["a verb"])
+
+
+def _object_said(text: str, verb: Word, particle: Word) -> str:
+    """The words of the thing a phrasal verb's clause names ("my jacket" of "hang up my jacket", "the kids" of "tuck
+    the kids in"), up to four words before the clause goes on; "" when there are none or more."""
+    between = text[verb.end:particle.start].strip()
+    after = re.split(r"[,;.!?]| and | then ", text[particle.end:], maxsplit=1)[0].strip()
+    words = (between or after).split()
+    return " ".join(words) if len(words) <= 4 else ""
 
 
 def _thing_asked_error(text: str, lexicon: Lexicon, evoked: Evoked, role: str) -> CommandError:

@@ -83,15 +83,17 @@ plural: a pair ("the gloves") or a noun with a plural form only ("the scissors")
 def said_as_plural(name: str) -> bool:
     """Whether one thing of a class (or an instance's name, ``gloves_1``) is called "them": its last word names a
     pair in the plural (:data:`~seal_cli.planning.grounding.PAIRED`: "gloves", "goggles"; not "glass", a drinking
-    glass, nor "glove") or has a plural form only ("scissors", "pliers"). "hang them on the coat rack", holding the
-    gloves, was refused: nothing before "them" fit (e2e31)."""
+    glass, nor "glove"), has a plural form only ("scissors", "pliers"), or is the plural of a noun whose singular is
+    another word: a thing the map itself names in the plural, one box of "tissues", one bag of "crayons" (e2e32:
+    after `--done 'bring me the tissues'`, "take them to Priya" was refused). "hang them on the coat rack", holding
+    the gloves, was refused: nothing before "them" fit (e2e31)."""
     from seal_cli.language.morphology import noun_lemma, plural_only
 
     words = [w for w in class_words(name) if not w.isdigit()]
     if not words:
         return False
     word = words[-1]        # a class named by the plural of a pair ("gloves", "glasses"; not a drinking "glass")
-    return (word != noun_lemma(word) and noun_lemma(word) in PAIRED) or plural_only(word)
+    return word != noun_lemma(word) or plural_only(word)
 
 
 def instance_names(cls: str, n: int) -> tuple[str, ...]:
@@ -1648,7 +1650,10 @@ def the_goals_said_among(commanded: list[Binding], things: Things) -> dict[Bindi
     milk in the fridge", a fridge in the shop and one in the kitchen), with those places; where the map has a thing of
     the kind in one of them already, the frame's goal is that place and the command's name of the thing trades names
     with it, so the plan says it is so already (:func:`seal_cli.planning.lying.goal_among`, e2e28: the plan moved the
-    kitchen's milk to the shop's fridge, each fridge holding a milk). ``commanded`` is changed in place."""
+    kitchen's milk to the shop's fridge, each fridge holding a milk). Not for a thing a done command moved: "put it in
+    the cupboard" after `--done 'take the ball to the classroom'` is that ball, not the one left in the hall's cupboard
+    (e2e32: the plan said it was so already). A goal said "back" is the place the thing came from, of those
+    (:func:`_came_from`). ``commanded`` is changed in place."""
     from seal_cli.planning.lying import goal_among
 
     m = things.map
@@ -1675,7 +1680,14 @@ def the_goals_said_among(commanded: list[Binding], things: Things) -> dict[Bindi
             return next((n for n in ones if things.lies_in(n, place)), None)
 
         back = binding in things.one_away and not any(things.lies_in(theme, p) for p in among)
-        place = None if back else goal_among(binding, theme, cls, held=key, among=among, lies_in=lying)
+        if back and (origin := _came_from(theme, among, commanded[:index], things)) not in (None, goal):
+            again = binding.frame.bind({**binding.elements, "goal": origin})    # "back in the cupboard": its own
+            commanded[index] = again
+            things.one_away[things.one_away.index(binding)] = again
+            continue
+        moved = theme in things.taken_from      # the one a done command moved ("put it in the cupboard"): no other
+        place = None if back or moved else goal_among(binding, theme, cls, held=key, among=among, lies_in=lying)
+
         if len(among) > 1 and not back:     # "back on the bookshelf": one not on any (the_ones_not_there)
             found[binding] = among
         if back and binding in things.one_more:     # "another loaf on the counter": the counter one lies on
@@ -1694,6 +1706,17 @@ def the_goals_said_among(commanded: list[Binding], things: Things) -> dict[Bindi
             commanded[index] = again
             found[again] = found.pop(binding)
     return found
+
+
+def _came_from(theme: str, among: Sequence[str], before: Sequence[Binding], things: Things) -> str | None:
+    """Of the ``among`` places a goal said "back" to did not tell apart ("put it back in the cupboard", four
+    cupboards), the one the thing came from: the source of the last frame before that took it up, else where a
+    command done took it from (:attr:`Things.taken_from`); None when it came from none of them (e2e32: after `--done
+    'take the ball to the classroom'`, the ball went "back" into the classroom's cupboard, the nearest, not the hall's
+    it was taken from)."""
+    sources = [b.elements.get("source") for b in before if b.elements.get("theme") == theme and _takes(b.frame)]
+    origin = next((s for s in reversed(sources) if s is not None), None) or things.taken_from.get(theme)
+    return origin if origin in among else None
 
 
 def the_ones_not_there(commanded: Sequence[Binding], things: Things) -> None:

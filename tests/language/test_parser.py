@@ -1398,3 +1398,21 @@ def test_him_is_the_person_said_not_a_thing_that_might_be_one(library: Library) 
     assert frames[1].elements["recipient"].refers_to == (0, "recipient")
     frames = parse_command("find the bellhop and tell him dinner is ready", library).frames
     assert frames[1].elements["recipient"].refers_to == (0, "theme")       # nobody else: the one that may be
+
+
+@pytest.mark.parametrize(("command", "example"), [
+    ("hang up my jacket", '"hang up my jacket on the ..."'),
+    ("hang my coat up", '"hang up my coat on the ..."'),
+    ("hang up", '"hang it up on the ..."'),
+])
+def test_a_phrasal_verb_of_its_own_says_how_to_say_the_verbs_own_sense(library: Library, command: str,
+                                                                       example: str) -> None:
+    """e2e32: "hang up my jacket" was refused with only what the robot can do; a verb that puts a thing somewhere
+    says how to say its own sense, with where the thing goes (the same command with a place is a Place)."""
+    from seal_cli.language.lexicon import CommandError
+    from seal_cli.language.parser import parse_command
+
+    with pytest.raises(CommandError) as caught:
+        parse_command(command, library)
+    assert f"to hang a thing somewhere, say where it goes ({example})" in caught.value.message
+    assert [f.frame for f in parse_command("hang up my jacket on the hook", library).frames] == ["Place"]

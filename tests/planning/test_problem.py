@@ -1041,3 +1041,38 @@ def test_a_kind_the_map_knows_nothing_of_is_the_compound_said(library: Library, 
 
     apartment = load_map(map_path("apartment"))
     assert [str(b) for b in problem_of_text(text, library, map=apartment).commanded] == [plan]
+
+
+def test_a_thing_the_map_names_in_the_plural_is_them(library: Library) -> None:
+    """e2e32: after `--done 'bring me the tissues'` on the school, "take them to Priya" was refused (nothing before
+    "them" fit): a thing the map names by a plural ("tissues", whose singular is "tissue") is "them" as a pair is;
+    a mug is still "it"."""
+    from seal_cli.errors import SealError
+    from seal_cli.maps.formats.map_server import load_map
+    from seal_cli.pipeline import plan
+    from seal_cli.planning.problem import said_as_plural
+
+    m = load_map(Path(__file__).resolve().parents[2] / "maps" / "school.yaml")
+    assert [str(s) for s in plan("take them to Priya", library, map=m, done=["bring me the tissues"]).steps] == [
+        "Pick(theme=tissues)", "Bring(theme=tissues, recipient=priya)"]
+    with pytest.raises(SealError, match="cannot tell what 'them' refers to"):
+        plan("take them to Priya", library, map=m, done=["bring me the stapler"])
+    assert said_as_plural("tissues") and said_as_plural("crayons_1")
+    assert not said_as_plural("mug") and not said_as_plural("box") and not said_as_plural("glass")
+
+
+def test_back_into_one_of_several_places_is_the_one_it_came_from(library: Library) -> None:
+    """e2e32: after `--done 'take the ball to the classroom'` on the school (the ball taken from the hall's cupboard),
+    "put it back in the cupboard" chose the classroom's cupboard, the nearest of four; back is the one it came
+    from. Said without "back", "it" is still the ball the done command moved, into the nearest cupboard (the plan said
+    it was so already: another ball lay in the hall's cupboard), as the run does."""
+    from seal_cli.maps.formats.map_server import load_map
+    from seal_cli.pipeline import plan
+
+    m = load_map(Path(__file__).resolve().parents[2] / "maps" / "school.yaml")
+    done = ["take the ball to the classroom"]
+    assert [str(s) for s in plan("put it back in the cupboard", library, map=m, done=done).steps] == [
+        "Pick(theme=ball, source=classroom)", "Open(theme=cupboard_4)", "Place(theme=ball, goal=cupboard_4)"]
+    assert str(plan("put it in the cupboard", library, map=m, done=done).steps[-1]) == \
+        "Place(theme=ball, goal=cupboard_1)"
+
