@@ -1210,5 +1210,5 @@ def _split_particle(unit: str, clause: Clause, after: int, before: int) -> Word 
     words = unit.split()
     if len(words) < 2:
         return None
-    return next((w for w in clause.items if isinstance(w, Word) and w.tag == "PARTICLE" and w.lower == words[-1]
-                 and after <= w.start and w.end <= before), None)
+    return next((w for w in clause.items if isinstance(w, Word) and w.tag == "PARTICLE" and
+                 w.lower.split()[-1] == words[-1] and after <= w.start and w.end <= before), None)   # "switched off"

@@ -3998,3 +3998,17 @@ def test_a_unit_another_frame_lists_said_alone_is_that_frames(library: Library) 
     """words40: "leave" alone is going away because only Place lists it; "return" is Go's too, and stays its."""
     parse = parse_command("go to the shed and return", library)
     assert [(f.frame, f.lexical_unit) for f in parse.frames][-1] == ("Go", "return")
+
+
+@pytest.mark.parametrize(("text", "want"), [
+    ("I'd like the heater turned on.", [("ToggleOn", {"theme": "heater"})]),
+    ("we want the lamps switched off in the den", [("ToggleOff", {"theme": "lamps in the den"})]),
+    ("I'd like the cup picked up from the table", [("Pick", {"theme": "cup", "source": "table"})]),
+    ("I'd like the blinds closed", [("Close", {"theme": "blinds"})]),                     # one word: as before
+])
+def test_a_wish_for_a_thing_done_by_a_verb_and_its_particle(
+        text: str, want: list[tuple[str, dict[str, str]]], library: Library) -> None:
+    """words43: "I'd like the heater *turned on*" was refused at "on" ("'i'd like ... on' is no verb"), "... the cup
+    *picked up* from the table" a Bring of "the cup picked"; a past participle and its particle that make a unit of
+    the library ("turn on", "pick up") are one split particle."""
+    assert texts(text, library) == [(f, {r: f"the {v}" for r, v in els.items()}) for f, els in want]

@@ -1146,12 +1146,15 @@ def _wished_done(s: State, i: int) -> Match | None:
         if low in (",", ";", "and", "then") or low in BE_WORDS or low in FINITE:
             return None
         unit = verb_lemma(low)
+        two = _done_with_particle(s, q + 1)       # "I'd like the cup *picked up* from the table": "pick up"
         if unit is None or low not in participles(unit) or \
-                (unit,) not in s.lexicon.units.get(unit, ()) or words[q - 1].lower in NP_OPENERS or \
-                words[q - 1].lower in PREPOSITIONS:
+                (unit,) not in s.lexicon.units.get(unit, ()) and two is None or \
+                words[q - 1].lower in NP_OPENERS or words[q - 1].lower in PREPOSITIONS:
             continue
-        if words[q + 1].lower not in PREPOSITIONS or not s.np_starts(q + 1 + match_phrase(words, q + 1, PREPOSITIONS)):
+        after = q + 2 if two is not None else q + 1
+        if words[after].lower not in PREPOSITIONS or not s.np_starts(after + match_phrase(words, after, PREPOSITIONS)):
             return None
+        unit = two or unit
         start, stop = words[i].start, words[k - 1].end
         return Match(n, (Word(s.text_of(start, stop), start, stop, Tag.VERB, unit),), expect=False, verb=unit,
                      using=False, particle=(q, unit))
@@ -1198,6 +1201,9 @@ def _state_after(s: State, i: int, n: int, stop: int | None = None) -> Match | N
     if q <= k:                                   # the state ends the sentence, or a place follows it ("the
         return None                              # lights on in the living room": where they are)
     unit = _state_unit(s, words[q].lower)
+    done = _done_with_particle(s, q)
+    if done is not None:                         # "I'd like the heater *turned on*": the particle's unit, said whole
+        unit, q = done, q - 1
     before = words[q - 1].lower
     if unit is None or before in NP_OPENERS or before in PREPOSITIONS or \
             any(words[p].lower in BE_WORDS or words[p].lower in (",", "and", "then") and not _nouns_joined(s, p) or
@@ -1206,6 +1212,19 @@ def _state_after(s: State, i: int, n: int, stop: int | None = None) -> Match | N
     start, stop = words[i].start, words[k - 1].end
     return Match(n, (Word(s.text_of(start, stop), start, stop, Tag.VERB, unit),), expect=False, verb=unit,
                  using=False, particle=(q, unit))
+
+
+def _done_with_particle(s: State, q: int) -> str | None:
+    """The unit of two words a past participle and the particle at ``q`` say ("turned *on*": "turn on", "switched
+    off", "picked up"), when the library has it; None otherwise ("closed": one word, "left on": no unit "leave on").
+    The participle and the particle are then one split particle (:func:`~seal_cli.language.rules.verbs.split_unit`)."""
+    if q < 1:
+        return None
+    low, done = s.words[q].lower, s.words[q - 1].lower
+    verb = verb_lemma(done)
+    if verb is None or done not in participles(verb):
+        return None
+    return f"{verb} {low}" if (verb, low) in s.lexicon.units.get(verb, ()) else None
 
 
 def _switched_by_unknown(s: State, i: int) -> Match | None:
@@ -1952,12 +1971,15 @@ WISHED_DONE = Rule("a wish for a thing done", _wished_done, (
     Example("I want the apple brought to me", "I want", Tag.VERB),
     Example("I'd like the plate put on the table", "put", Tag.PARTICLE),
     Example("we need the chairs moved to the porch", "we need", Tag.VERB),
+    Example("I'd like the cup picked up from the table", "picked up", Tag.PARTICLE),
     Example("what I want is the towels taken to the bathroom", "what I want is", Tag.VERB),
 ), first_words(_WISHED_STATES), "'I want X brought to me', 'I'd like X put on Y': bring X to me, put X on Y")
 WISHED_STATE = Rule("a wish for a thing's state", _wished_state, (
     Example("I'd like the blinds closed", "I'd like", Tag.VERB),
     Example("I want the lights off, please", "off", Tag.PARTICLE),
     Example("I need the door open", "I need", Tag.VERB),
+    Example("I'd like the heater turned on", "turned on", Tag.PARTICLE),
+    Example("we want the lights switched off in the hall", "switched off", Tag.PARTICLE),
     Example("we'd like the lights on in the living room", "on", Tag.PARTICLE),
     Example("I'd like my tea hot", "hot", Tag.PARTICLE),
     Example("I want the door open and the radio on", "open", Tag.PARTICLE),
