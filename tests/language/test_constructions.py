@@ -4012,3 +4012,16 @@ def test_a_wish_for_a_thing_done_by_a_verb_and_its_particle(
     *picked up* from the table" a Bring of "the cup picked"; a past participle and its particle that make a unit of
     the library ("turn on", "pick up") are one split particle."""
     assert texts(text, library) == [(f, {r: f"the {v}" for r, v in els.items()}) for f, els in want]
+
+
+@pytest.mark.parametrize(("text", "want"), [
+    ("Where did the kids leave the football?", [("Find", {"theme": "football"})]),
+    ("where does my little brother keep his shoes", [("Find", {"theme": "shoe"})]),
+    ("where did our guests put their coats", [("Find", {"theme": "coat"})]),
+    ("where did the cup go", [("Find", {"theme": "cup"})]),                 # no person, no object: as before
+])
+def test_where_did_people_said_with_a_determiner_put_it(
+        text: str, want: list[tuple[str, dict[str, str]]], library: Library) -> None:
+    """words43: "where did *the kids* leave the football?" was a Find of the kids and a Place of the football; a noun
+    phrase of people (a determiner or possessive, then a person noun) is the subject as "I" or "dad" is."""
+    assert_reads(text, want, library)

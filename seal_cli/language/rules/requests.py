@@ -164,13 +164,33 @@ def _person_word(s: State, k: int) -> bool:
 def _where_did(s: State, i: int) -> Match | None:
     words = s.words
     where, auxiliaries, subjects = WHERE_DID
-    if i + 4 >= len(words) or WHERE_MEANS not in s.lexicon.units or words[i + 1].lower not in auxiliaries or \
-            words[i + 2].lower not in subjects and not _person_word(s, i + 2) or \
-            verb_lemma(words[i + 3].lower) != words[i + 3].lower or not s.np_starts(i + 4):
+    if i + 4 >= len(words) or WHERE_MEANS not in s.lexicon.units or words[i + 1].lower not in auxiliaries:
         return None
-    end = words[i + 3].end
-    return Match(4, (Word(s.text_of(words[i].start, end), words[i].start, end, Tag.VERB, WHERE_MEANS),),
+    v = i + 3 if words[i + 2].lower in subjects or _person_word(s, i + 2) else _person_said(s, i + 2)
+    if v is None or v + 1 >= len(words) or verb_lemma(words[v].lower) != words[v].lower or not s.np_starts(v + 1):
+        return None
+    end = words[v].end
+    return Match(v + 1 - i, (Word(s.text_of(words[i].start, end), words[i].start, end, Tag.VERB, WHERE_MEANS),),
                  expect=False, verb=WHERE_MEANS, using=False)
+
+
+def _person_said(s: State, k: int) -> int | None:
+    """Where a noun phrase of people at ``k`` that opens with a determiner or a possessive ends ("where did *the kids*
+    leave the ball?", "where does *my little brother* keep his shoes"): after a few words, a noun the taxonomy lists
+    as a person; None when the phrase names no person ("where did the cat ...")."""
+    words = s.words
+    j = k
+    while j < len(words) and words[j].lower in NP_OPENERS:
+        j += 1
+    if j == k:
+        return None
+    for h in range(j, min(j + 3, len(words))):
+        low = words[h].lower
+        if not low.isalpha() or low in CLOSED:
+            return None
+        if (noun_lemma(low) or low) in s.lexicon.people:
+            return h + 1
+    return None
 
 
 _CAN_YOU = frozenset(["can you", "could you", "can't you", "couldn't you", "you can", "you could"])
@@ -1936,6 +1956,8 @@ WHERE_DID_RULE = Rule("where did I leave", _where_did, (
     Example("Where can I find the sponge?", "Where can I find", Tag.VERB),
     Example("where did dad put the scissors?", "where did dad put", Tag.VERB),
     Example("where does Priya keep her tea", "where does Priya keep", Tag.VERB),
+    Example("Where did the kids leave the football?", "Where did the kids leave", Tag.VERB),
+    Example("where does my little brother keep his shoes", "where does my little brother keep", Tag.VERB),
 ), WHERE_DID[0], "'where did I leave X', 'where do we keep X': find X")
 SEEN_ASKED_RULE = Rule("have you seen", _seen_asked, (
     Example("can you see my phone anywhere?", "see", Tag.VERB),
