@@ -1172,7 +1172,7 @@ def _wished_done(s: State, i: int) -> Match | None:
                 words[q - 1].lower in NP_OPENERS or words[q - 1].lower in PREPOSITIONS:
             continue
         after = q + 2 if two is not None else q + 1
-        if words[after].lower not in PREPOSITIONS or not s.np_starts(after + match_phrase(words, after, PREPOSITIONS)):
+        if after >= len(words) or words[after].lower not in PREPOSITIONS or not s.np_starts(after + match_phrase(words, after, PREPOSITIONS)):
             return None
         unit = two or unit
         start, stop = words[i].start, words[k - 1].end
@@ -1238,7 +1238,7 @@ def _done_with_particle(s: State, q: int) -> str | None:
     """The unit of two words a past participle and the particle at ``q`` say ("turned *on*": "turn on", "switched
     off", "picked up"), when the library has it; None otherwise ("closed": one word, "left on": no unit "leave on").
     The participle and the particle are then one split particle (:func:`~seal_cli.language.rules.verbs.split_unit`)."""
-    if q < 1:
+    if not 1 <= q < len(s.words):
         return None
     low, done = s.words[q].lower, s.words[q - 1].lower
     verb = verb_lemma(done)
