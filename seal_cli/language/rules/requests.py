@@ -1166,7 +1166,8 @@ def _wished_done(s: State, i: int) -> Match | None:
         if low in (",", ";", "and", "then") or low in BE_WORDS or low in FINITE:
             return None
         unit = verb_lemma(low)
-        two = _done_with_particle(s, q + 1)       # "I'd like the cup *picked up* from the table": "pick up"
+        two = None if s.np_starts(q + 2) else _done_with_particle(s, q + 1)   # "the cup *picked up* from the
+        # table": "pick up"; "the plate put *on the table*": a preposition and its phrase, "put"
         if unit is None or low not in participles(unit) or \
                 (unit,) not in s.lexicon.units.get(unit, ()) and two is None or \
                 words[q - 1].lower in NP_OPENERS or words[q - 1].lower in PREPOSITIONS:
@@ -1994,6 +1995,7 @@ WISHED_DONE = Rule("a wish for a thing done", _wished_done, (
     Example("I'd like the plate put on the table", "put", Tag.PARTICLE),
     Example("we need the chairs moved to the porch", "we need", Tag.VERB),
     Example("I'd like the cup picked up from the table", "picked up", Tag.PARTICLE),
+    Example("we want the lights switched off in the hall", "switched off", Tag.PARTICLE),
     Example("what I want is the towels taken to the bathroom", "what I want is", Tag.VERB),
 ), first_words(_WISHED_STATES), "'I want X brought to me', 'I'd like X put on Y': bring X to me, put X on Y")
 WISHED_STATE = Rule("a wish for a thing's state", _wished_state, (
@@ -2001,7 +2003,6 @@ WISHED_STATE = Rule("a wish for a thing's state", _wished_state, (
     Example("I want the lights off, please", "off", Tag.PARTICLE),
     Example("I need the door open", "I need", Tag.VERB),
     Example("I'd like the heater turned on", "turned on", Tag.PARTICLE),
-    Example("we want the lights switched off in the hall", "switched off", Tag.PARTICLE),
     Example("we'd like the lights on in the living room", "on", Tag.PARTICLE),
     Example("I'd like my tea hot", "hot", Tag.PARTICLE),
     Example("I want the door open and the radio on", "open", Tag.PARTICLE),
