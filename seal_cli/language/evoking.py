@@ -168,8 +168,11 @@ class Evoker:
         existential "there" with "is"/"are" ending a question whose frame has a ground, no place said in the clause,
         after a clause that named a place, asks of that place, as a bare "there" does ("count the books there"): the
         "there" becomes the ground (text "there", ``refers_to`` the place; words43: the whole house was counted).
-        With no place before ("how many chairs are there?") it stays existential, no place."""
+        With no place before ("how many chairs are there?") it stays existential, no place; with nothing counted ("...
+        and let me know how many there are") it reports the count before (:mod:`~seal_cli.language.reported`)."""
         items = list(clause.items)
+        if not clause.objects:
+            return                           # "count the dishes and let me know how many there are": a report
         while items and isinstance(items[-1], Word) and items[-1].info == "time":
             items.pop()                      # "... are there right now"
         last = items[-2:]

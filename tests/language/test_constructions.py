@@ -4025,3 +4025,23 @@ def test_where_did_people_said_with_a_determiner_put_it(
     """words43: "where did *the kids* leave the football?" was a Find of the kids and a Place of the football; a noun
     phrase of people (a determiner or possessive, then a person noun) is the subject as "I" or "dad" is."""
     assert_reads(text, want, library)
+
+
+@pytest.mark.parametrize(("text", "want"), [
+    ("If you could wipe the kitchen table, that would be great.", [("Clean", {"theme": "table"})]),
+    ("if you'd close the door", [("Close", {"theme": "door"})]),
+    ("if you could find the keys, bring them to me", [("Bring", {"theme": "key", "recipient": "me"})]),  # condition
+    ("It would help a lot if you put the groceries in the fridge.", [("Place", {"theme": "grocery",
+                                                                                "goal": "fridge"})]),
+    ("It would be great to have the lights on in the kitchen.", [("ToggleOn", {"theme": "light"})]),
+    ("it'd be nice to have a blanket", [("Bring", {"theme": "blanket", "recipient": "me"})]),
+    ("Mind if I ask you to open the garage door?", [("Open", {"theme": "door"})]),
+    ("would you mind if I asked you to close the window", [("Close", {"theme": "window"})]),
+    ("I could use some help finding my keys.", [("Find", {"theme": "key"})]),
+    ("I need a hand carrying the groceries to the car", [("Bring", {"theme": "grocery", "goal": "car"})]),
+])
+def test_requests_said_as_wishes_conditions_and_leave_asked(
+        text: str, want: list[tuple[str, dict[str, str]]], library: Library) -> None:
+    """words43: each was refused as a statement or an unknown verb ("mind"), or a Bring of "some help finding my
+    keys"."""
+    assert_reads(text, want, library)

@@ -217,3 +217,9 @@ def test_how_many_are_there_after_a_place_asks_of_that_place(library: Library, t
 def test_how_many_are_there_without_a_place_before_names_none(library: Library, text: str) -> None:
     count = next(f for f in parse_command(text, library).frames if f.frame == "Count")
     assert count.elements.get("ground") is None or count.elements["ground"].text == "the table"
+
+
+def test_how_many_there_are_of_nothing_said_reports_the_count_before(library: Library) -> None:
+    """"there" names no place where nothing is counted: the telling reports the count before (words41's merge)."""
+    assert _frames("count the cups in the sink and let me know how many there are", library) == [
+        ("Count", {"theme": "the cups", "ground": "the sink"})]

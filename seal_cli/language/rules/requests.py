@@ -22,6 +22,7 @@ from seal_cli.language.english import (
     FINITE,
     FOUND_OUT,
     HERE_WORDS,
+    IMPERSONAL_WISHES,
     INFORMATION,
     KNOW_WISHES,
     LEFT_ASKED,
@@ -1032,6 +1033,25 @@ def _request(s: State, i: int) -> Match | None:
                      _unsaid(end, Tag.PRON, None, _SPEAKER)), expect=False, verb=REQUEST_MEANS, using=False)
 
 
+_HELP = frozenset(["help", "some help", "a little help", "a bit of help", "your help", "a hand", "a little hand",
+                   "some assistance", "your assistance"])
+"""Help asked for as a thing ("I could use *some help* finding my keys"): what the help is for is the request."""
+
+
+def _help_wished(s: State, i: int) -> Match | None:
+    """"*I could use some help* finding my keys", "I need a hand carrying the groceries to the car", "I'd love some help
+    putting the dishes away": a wish for help (``REQUESTS``, then :data:`_HELP`) with an -ing form of a verb of the
+    library after it asks for that deed; the wish and the help are politeness, the -ing form the verb (words43: a
+    Bring of "some help finding my keys"). "I need a hand" alone, "I need help with the box" stay wishes."""
+    words = s.words
+    n = _phrase(s, i, REQUESTS)
+    m = _phrase(s, i + n, _HELP) if n else 0
+    k = i + n + m
+    if not m or k >= len(words) or gerund_lemma(words[k].lower) is None or s.verb_at(k) is None:
+        return None
+    return Match(n + m, (merge(s.words, i, n + m, Tag.POLITE),), expect=True)
+
+
 _ASKED_FOR = frozenset(["can", "could", "may", "might"])
 _HAVING = frozenset(["have", "get"])
 
@@ -1125,7 +1145,7 @@ def _state_unit(s: State, low: str) -> str | None:
     return result[1] if result is not None else None        # "I'd like my tea *hot*": heat it
 
 
-_WISHES = WISHED_PLACED | frozenset(["i need", "we need"])
+_WISHES = WISHED_PLACED | IMPERSONAL_WISHES | frozenset(["i need", "we need"])
 _PSEUDO_CLEFTS = frozenset(f"what {wish} is" for wish in _WISHES)
 """A wish said as "*what I need is* the dishes counted" (a pseudo-cleft, words35): what follows "is" is the wish's
 object, as after "I need"; no question of what something is (``QUESTION`` leaves it)."""
@@ -2063,6 +2083,10 @@ REQUEST = Rule("wish for a thing", _request, (
     Example("is there any chance of a blanket?", "is there any chance of", Tag.VERB),
     Example("any chance I could have a cushion", "any chance I could have", Tag.VERB),
 ), _REQUEST_FIRST, "'I'd like X', 'can I have X', 'I need X': bring X to the speaker")
+HELP_WISHED = Rule("a wish for help doing", _help_wished, (
+    Example("I could use some help finding my keys.", "I could use some help", Tag.POLITE),
+    Example("I need a hand carrying the groceries to the car", "I need a hand", Tag.POLITE),
+), _REQUEST_FIRST, "'I could use some help V-ing X': V X")
 REQUEST_FOR = Rule("may a person have a thing", _request_for, (
     Example("Can Jane have the salt?", "Jane", Tag.NAME),
     Example("could Robin get a towel from the bathroom?", "could", Tag.VERB),
