@@ -1193,7 +1193,8 @@ def _wished_done(s: State, i: int) -> Match | None:
                 words[q - 1].lower in NP_OPENERS or words[q - 1].lower in PREPOSITIONS:
             continue
         after = q + 2 if two is not None else q + 1
-        if after >= len(words) or words[after].lower not in PREPOSITIONS or not s.np_starts(after + match_phrase(words, after, PREPOSITIONS)):
+        if after >= len(words) or words[after].lower not in PREPOSITIONS or \
+                not s.np_starts(after + match_phrase(words, after, PREPOSITIONS)):
             return None
         unit = two or unit
         start, stop = words[i].start, words[k - 1].end
