@@ -178,6 +178,10 @@ POLITE = asked_negatively(frozenset(["please", "kindly", "could you", "can you",
                     "hurry", "hurry up", "sorry to bother you", "sorry to trouble you", "sorry to disturb you",
                     "sorry to bother you but", "sorry to trouble you but", "sorry to disturb you but",
                     "do you mind", "how about", "what about", "how about you", "what about you",
+                    # words43: a deed asked as a trouble ("*would it be too much trouble to* bring me a coffee?")
+                    *(f"{would} {trouble}{whom} to" for would in ("would it be", "will it be", "is it")
+                      for trouble in ("too much trouble", "any trouble", "a problem", "a bother", "too much to ask")
+                      for whom in ("", " for you")),
                     # words43: leave to ask asked ("*mind if I ask you to* open the door?")
                     *(f"{lead}mind if i {ask} you to" for lead in ("", "do you ", "would you ", "would you really ")
                       for ask in ("ask", "asked", "could ask")),
@@ -487,7 +491,10 @@ IMPERSONAL_WISHES = frozenset(f"{it} be {really}{adjective} to have" for it in (
 on"): a wish as "I'd like" is (words43: refused as a statement)."""
 REQUESTS = REQUESTS | IMPERSONAL_WISHES
 REQUEST_MEANS = "bring"
-WISHED_PLACED = frozenset(["i want", "i'd like", "i would like", "we want", "we'd like", "we would like"])
+WISHED_PLACED = frozenset([*(f"{who} {wish}" for who in ("i", "we") for wish in ("want", "would like")),
+                           "i'd like", "we'd like",
+                           *(f"{who} really {wish}" for who in ("i", "we") for wish in ("want", "need")),
+                           *(f"{who}{would} really like" for who in ("i", "we") for would in ("'d", " would"))])
 WISHED_PLACES = frozenset(["on", "onto", "in", "into", "inside", "under"])
 PLACE_MEANS = "put"
 """"*I want* the mug *on* the shelf", "I'd like the books in the box": the speaker's wish for where a thing is,

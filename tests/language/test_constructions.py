@@ -4045,3 +4045,20 @@ def test_requests_said_as_wishes_conditions_and_leave_asked(
     """words43: each was refused as a statement or an unknown verb ("mind"), or a Bring of "some help finding my
     keys"."""
     assert_reads(text, want, library)
+
+
+@pytest.mark.parametrize(("text", "want"), [
+    ("Where have the children left their shoes?", [("Find", {"theme": "shoe"})]),      # the perfect's participle
+    ("where has Tom put the keys", [("Find", {"theme": "key"})]),
+    ("Would it be too much trouble to bring me a coffee?", [("Bring", {"theme": "coffee", "recipient": "me"})]),
+    ("is it a problem for you to close the door", [("Close", {"theme": "door"})]),
+    ("I'd love it if you went to the kitchen and got me a snack.", [("Go", {"goal": "kitchen"}),
+                                                                    ("Bring", {"theme": "snack", "recipient": "me"})]),
+    ("I'd really like the dishes washed.", [("Clean", {"theme": "dish"})]),
+    ("we really want the vase on the shelf", [("Place", {"theme": "vase", "goal": "shelf"})]),
+])
+def test_requests_of_a_second_set_written_after_the_first_fixes(
+        text: str, want: list[tuple[str, dict[str, str]]], library: Library) -> None:
+    """words43 (wording_questions9): refused (a perfect after "where", a trouble asked, "I'd love it if you went ...")
+    or a Bring of "the dishes washed" ("really" between the wisher and the wish)."""
+    assert_reads(text, want, library)

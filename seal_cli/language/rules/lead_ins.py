@@ -420,7 +420,8 @@ def _you_would(s: State, j: int) -> bool:
     past = words[j + 1].lower
     lemma = verb_lemma(past)
     return lemma is not None and (lemma != past or past in participles(lemma)) and \
-        not past.endswith(("ing", "s")) and s.verb_at(j + 1) is not None and s.np_starts(j + 2)
+        not past.endswith(("ing", "s")) and s.verb_at(j + 1) is not None and \
+        (s.np_starts(j + 2) or words[j + 2].lower in PREPOSITIONS)   # "if you *went to* the kitchen"
     # a past the same as the base ("it would help a lot if you *put* the groceries away": words43) is a past too
 
 
@@ -585,6 +586,7 @@ POLITE_FRAME = Rule("if you could", _polite_frame, (
     Example("it'd be great if you'd close the door", "it'd be great if you'd", Tag.POLITE),
     Example("it would be nice if you opened the gate", "it would be nice if you", Tag.POLITE),
     Example("It would help a lot if you put the groceries in the fridge", "It would help a lot if you", Tag.POLITE),
+    Example("I'd love it if you went to the kitchen", "I'd love it if you", Tag.POLITE),
     Example("I think you should follow her", "I think you should", Tag.POLITE),
     Example("I suppose you need to wash the cup", "I suppose you need to", Tag.POLITE),
     Example("it would be kind of you to open the gate", "it would be kind of you to", Tag.POLITE),

@@ -168,7 +168,11 @@ def _where_did(s: State, i: int) -> Match | None:
     if i + 4 >= len(words) or WHERE_MEANS not in s.lexicon.units or words[i + 1].lower not in auxiliaries:
         return None
     v = i + 3 if words[i + 2].lower in subjects or _person_word(s, i + 2) else _person_said(s, i + 2)
-    if v is None or v + 1 >= len(words) or verb_lemma(words[v].lower) != words[v].lower or not s.np_starts(v + 1):
+    if v is None or v + 1 >= len(words) or not s.np_starts(v + 1):
+        return None
+    said, lemma = words[v].lower, verb_lemma(words[v].lower)
+    perfect = words[i + 1].lower in ("have", "has") and lemma is not None and said in participles(lemma)
+    if lemma != said and not perfect:    # "where have the children *left* their shoes?": the perfect's participle
         return None
     end = words[v].end
     return Match(v + 1 - i, (Word(s.text_of(words[i].start, end), words[i].start, end, Tag.VERB, WHERE_MEANS),),
@@ -1979,6 +1983,8 @@ WHERE_DID_RULE = Rule("where did I leave", _where_did, (
     Example("where did dad put the scissors?", "where did dad put", Tag.VERB),
     Example("where does Priya keep her tea", "where does Priya keep", Tag.VERB),
     Example("Where did the kids leave the football?", "Where did the kids leave", Tag.VERB),
+    Example("where have you put my glasses", "where have you put", Tag.VERB),
+    Example("Where has Tom left the keys?", "Where has Tom left", Tag.VERB),
     Example("where does my little brother keep his shoes", "where does my little brother keep", Tag.VERB),
 ), WHERE_DID[0], "'where did I leave X', 'where do we keep X': find X")
 SEEN_ASKED_RULE = Rule("have you seen", _seen_asked, (
