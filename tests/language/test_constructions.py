@@ -150,6 +150,7 @@ def test_a_greeting_before_a_question(library: Library) -> None:
 
 
 SETS = sorted([*(Path(__file__).parents[1] / "data").glob("wording_questions*.jsonl"),
+               *(Path(__file__).parents[1] / "data").glob("wording_requests*.jsonl"),
                *(Path(__file__).parents[1] / "data").glob("wording_paraphrases*.jsonl"),
                *(Path(__file__).parents[1] / "data").glob("wording_fragments*.jsonl"),
                *(Path(__file__).parents[1] / "data").glob("wording_home*.jsonl"),
