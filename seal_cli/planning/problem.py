@@ -501,8 +501,8 @@ def _values(phrase: Phrase, earlier: Sequence[Mapping[str, tuple[str, ...]]], th
                                                        gone_to)) is not None:
         return on_map
     value = phrase.cls or phrase.head
-    if category == "message" and (asked := name_asked(phrase.text or "", things.taxonomy)) is not None:
-        value = asked         # "the names of the people in the kitchen": who is in the kitchen, not "name" (words43)
+    if category == "message" and (question := name_asked(phrase.text or "", things.taxonomy)) is not None:
+        value = question      # "the names of the people in the kitchen": who is in the kitchen, not "name" (words43)
     if category in ("message", "question"):    # what is said, as a name: "what's on it?" what_s_on_it
         value = " ".join(re.findall(r"[A-Za-z0-9]+", value))
     if things.names is not None and phrase.cls and not _names(phrase, phrase.cls, things):
