@@ -1398,3 +1398,12 @@ def test_him_is_the_person_said_not_a_thing_that_might_be_one(library: Library) 
     assert frames[1].elements["recipient"].refers_to == (0, "recipient")
     frames = parse_command("find the bellhop and tell him dinner is ready", library).frames
     assert frames[1].elements["recipient"].refers_to == (0, "theme")       # nobody else: the one that may be
+
+
+@pytest.mark.parametrize("text", ["if you", "in case you", "If you"])
+def test_a_subordinator_and_you_said_last_is_refused_cleanly(text: str, library: Library) -> None:
+    """words43: "if you" alone raised an IndexError (found by test_word_salad_parses_or_fails_cleanly's hypothesis):
+    the check for a verb of perceiving after "if you" read past the last word."""
+    with pytest.raises(CommandError) as refused:
+        parse_command(text, library)
+    assert refused.value.where.column == len(text) + 1
