@@ -178,6 +178,13 @@ POLITE = asked_negatively(frozenset(["please", "kindly", "could you", "can you",
                     "hurry", "hurry up", "sorry to bother you", "sorry to trouble you", "sorry to disturb you",
                     "sorry to bother you but", "sorry to trouble you but", "sorry to disturb you but",
                     "do you mind", "how about", "what about", "how about you", "what about you",
+                    # words43: a deed asked as a trouble ("*would it be too much trouble to* bring me a coffee?")
+                    *(f"{would} {trouble}{whom} to" for would in ("would it be", "will it be", "is it")
+                      for trouble in ("too much trouble", "any trouble", "a problem", "a bother", "too much to ask")
+                      for whom in ("", " for you")),
+                    # words43: leave to ask asked ("*mind if I ask you to* open the door?")
+                    *(f"{lead}mind if i {ask} you to" for lead in ("", "do you ", "would you ", "would you really ")
+                      for ask in ("ask", "asked", "could ask")),
                     "second", "secondly", "third", "thirdly", "fourth",
                     "fourthly", "lastly", "listen",
                     *(f"{what} {who} {wish} you to do is" for what in ("what", "all") for who in ("i", "we")
@@ -475,8 +482,19 @@ recipient). Asked as a trouble to the hearer, a thing after "for" ("*might I tro
 words26), as politeness asks a deed after "to" ("could I trouble you to ..."). A wish said as not minding ("*I
 wouldn't mind* a biscuit") or as a chance asked ("*any chance I could have* a cushion?", "*any chance of* a cup of
 tea?") is one too, and so are "I fancy X", and "could I possibly have X" (words30)."""
+APPROVAL = frozenset(["great", "nice", "good", "lovely", "wonderful", "helpful", "perfect", "fantastic", "amazing",
+                      "awesome", "brilliant", "handy", "ideal"])
+"""Adjectives of approval in a wish said impersonally ("it would be *great* to have ..."). English, not any corpus's."""
+IMPERSONAL_WISHES = frozenset(f"{it} be {really}{adjective} to have" for it in ("it would", "it'd", "it will", "it'll")
+                              for really in ("", "really ", "so ") for adjective in APPROVAL)
+"""A wish for a thing said impersonally ("*it would be great to have* a blanket", "it'd be nice to have the lights
+on"): a wish as "I'd like" is (words43: refused as a statement)."""
+REQUESTS = REQUESTS | IMPERSONAL_WISHES
 REQUEST_MEANS = "bring"
-WISHED_PLACED = frozenset(["i want", "i'd like", "i would like", "we want", "we'd like", "we would like"])
+WISHED_PLACED = frozenset([*(f"{who} {wish}" for who in ("i", "we") for wish in ("want", "would like")),
+                           "i'd like", "we'd like",
+                           *(f"{who} really {wish}" for who in ("i", "we") for wish in ("want", "need")),
+                           *(f"{who}{would} really like" for who in ("i", "we") for would in ("'d", " would"))])
 WISHED_PLACES = frozenset(["on", "onto", "in", "into", "inside", "under"])
 PLACE_MEANS = "put"
 """"*I want* the mug *on* the shelf", "I'd like the books in the box": the speaker's wish for where a thing is,

@@ -18,6 +18,7 @@ from seal_cli.language.english import (
     BESIDE,
     DEGREE_PHRASES,
     LOCATED,
+    LOCATIVE,
     NP_OPENERS,
     ROUTE_NOUNS,
     SPEAKER_PRONOUNS,
@@ -88,6 +89,7 @@ class Evoker:
             clause.items = [x for x in clause.items if not any(x is u for u in used)]
         for np in clause.held:
             self.hold(np)
+        self.there_asked(frames, clause)
         if frames and all(self.makes_state(f) for f in frames):
             clause.result = [x for x in clause.items if isinstance(x, PP) and self.is_form(x)]
             clause.items = [x for x in clause.items if not any(x is r for r in clause.result)]
@@ -160,6 +162,29 @@ class Evoker:
         raise CommandError(f"'{verb} {particle}' is no verb of the library: no frame of '{verb}' takes "
                            f"'{particle}' alone; say what to do ('wait here', 'turn it {particle}')",
                            clause.verb.start + 1, self.text, ["a verb the robot knows"])
+
+    def there_asked(self, frames: Sequence[Frame], clause: Clause) -> None:
+        """"go to the bedroom and tell me how many books *are there*", "... find out how many people there are": an
+        existential "there" with "is"/"are" ending a question whose frame has a ground, no place said in the clause,
+        after a clause that named a place, asks of that place, as a bare "there" does ("count the books there"): the
+        "there" becomes the ground (text "there", ``refers_to`` the place; words43: the whole house was counted).
+        With no place before ("how many chairs are there?") it stays existential, no place; with nothing counted ("...
+        and let me know how many there are") it reports the count before (:mod:`~seal_cli.language.reported`)."""
+        items = list(clause.items)
+        if not clause.objects:
+            return                           # "count the dishes and let me know how many there are": a report
+        while items and isinstance(items[-1], Word) and items[-1].info == "time":
+            items.pop()                      # "... are there right now"
+        last = items[-2:]
+        if len(last) != 2 or not all(isinstance(w, Word) for w in last) or \
+                sorted(str(w.tag) for w in last if isinstance(w, Word)) != ["BE", "THERE"] or \
+                any(isinstance(x, PP) and x.prep in LOCATIVE for x in clause.items) or \
+                not any("ground" in self.types.roles(f) for f in frames) or \
+                self.reference.place_before(self.clause_frames) is None:
+            return
+        there = next(w for w in last if isinstance(w, Word) and w.tag == "THERE")
+        at = next(k for k, x in enumerate(clause.items) if x is there)
+        clause.items[at] = PP("at", NP(there.start, there.end, there, "place", there=True), there.start)
 
     @staticmethod
     def object_as(role: str, clause: Clause) -> None:
@@ -1188,5 +1213,5 @@ def _split_particle(unit: str, clause: Clause, after: int, before: int) -> Word 
     words = unit.split()
     if len(words) < 2:
         return None
-    return next((w for w in clause.items if isinstance(w, Word) and w.tag == "PARTICLE" and w.lower == words[-1]
-                 and after <= w.start and w.end <= before), None)
+    return next((w for w in clause.items if isinstance(w, Word) and w.tag == "PARTICLE" and
+                 w.lower.split()[-1] == words[-1] and after <= w.start and w.end <= before), None)   # "switched off"

@@ -1169,7 +1169,8 @@ class State:
                 return "then", arrived, "then"      # "when you get there", "once you arrive,": arrived where we went
             if left:
                 return "cond", left, sub            # "turn off the stove *before you leave*": when, no frame
-            if sub in ("if", "in case") and match_phrase(words, k, PERCEIVING) and self.cond_end(k) > k + 1:
+            if sub in ("if", "in case") and k < len(words) and match_phrase(words, k, PERCEIVING) and \
+                    self.cond_end(k) > k + 1:               # ("if you" said last: no word after it, hypothesis)
                 return "cond", self.cond_end(k), sub    # "if you spot my wallet, ...": whether it is seen, no search
             if k < len(words) and (self.verb_at(k) is not None or self.verb_after(k)):
                 return "clause", k, sub

@@ -49,6 +49,7 @@ from seal_cli.frames.model import Action, Binding, Fact, Frame
 from seal_cli.frames.taxonomy import Taxonomy, check_class_name, class_key, class_words
 from seal_cli.maps.model import SPEAKER
 from seal_cli.planning.grounding import FIXED, PAIRED, WHERE_TYPES, is_room_word, kind_of, where_words, words_of
+from seal_cli.planning.questions import name_asked
 from seal_cli.planning.state import State, robot_facts
 
 OPENABLE = "openable"
@@ -502,6 +503,8 @@ def _values(phrase: Phrase, earlier: Sequence[Mapping[str, tuple[str, ...]]], th
                                                        gone_to)) is not None:
         return on_map
     value = phrase.cls or phrase.head
+    if category == "message" and (question := name_asked(phrase.text or "", things.taxonomy)) is not None:
+        value = question      # "the names of the people in the kitchen": who is in the kitchen, not "name" (words43)
     if category in ("message", "question"):    # what is said, as a name: "what's on it?" what_s_on_it
         value = " ".join(re.findall(r"[A-Za-z0-9]+", value))
     if things.names is not None and phrase.cls and not _names(phrase, phrase.cls, things):
@@ -523,7 +526,7 @@ def _values(phrase: Phrase, earlier: Sequence[Mapping[str, tuple[str, ...]]], th
     if phrase.quantity == 0:   # "bring me zero apples", "0 cups" planned one (hostile22): a count of none is no task
         raise _located(f"{phrase.text!r} asks for no things (a count of zero): say how many, at least one", phrase,
                        text)
-    count = _count(phrase, value, things)
+    count = 1 if category in ("message", "question") else _count(phrase, value, things)   # said once, "names" too
     if count == 1 and (other := _the_other(phrase, value, earlier, things)) is not None:
         return (other,)
     if count > MAX_COUNT:

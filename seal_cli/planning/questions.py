@@ -45,12 +45,13 @@ from dataclasses import dataclass, replace
 
 from seal_cli.errors import SealError, at_words
 from seal_cli.frames.model import Action, Binding, Frame
+from seal_cli.frames.taxonomy import Taxonomy
 from seal_cli.language.english import CHECK_WHETHER, WH_WORDS
 from seal_cli.language.values import Evoked, Parse, Phrase
 from seal_cli.planning.grounding import MapNames, Referent, Refusal, words_of
 
 __all__ = ["ANY_THING", "FACTS", "KINDS", "STATE_WORDS", "Question", "anything_there", "asks_whether", "fact_asked",
-           "looking", "put_to_person", "read_questions", "reports", "told_first"]
+           "looking", "name_asked", "put_to_person", "read_questions", "reports", "told_first"]
 
 KINDS = ("where", "whether", "how_many", "what", "state", "fact", "report", "asked")
 
@@ -190,18 +191,34 @@ def _relation_at(words: Sequence[str], start: int) -> tuple[int, int, str] | Non
     return None
 
 
-def _name_of(words: Sequence[str], names: MapNames) -> Question | None:
-    """"the name of the person in the office", "the names of the people at the door": who is there (lead, stop 42:
-    the run said "name" to the speaker, the message's head, and drove nowhere). The words between "of" and the place
-    must name a person ("the name of the book on the shelf" is no such question)."""
+def name_asked(message: str, taxonomy: Taxonomy) -> str | None:
+    """The question a message that asks for names asks, as it would be said ("the name of the person in the office":
+    "who is in the office"; "the names of the people at the door": "who is at the door"; "the name of the book on the
+    shelf": "what book is on the shelf"), else None. After "of", words that name a person ask who; any others ask
+    what, with the words said ("book", "biggest thing"). Read from words only: the place is not grounded here."""
+    words = message.lower().replace("'", "").replace("’", "").replace("?", " ").split()
     said = list(words[1:] if words[:1] == ["the"] else words)
     if len(said) < 4 or said[0] not in NAME_OF or said[1] != "of" or (at := _relation_at(said, 3)) is None:
         return None
-    i, n, relation = at
-    if not any(names.taxonomy.is_a(w, "person") is True for w in words_of(" ".join(said[2:i]))):
+    i = at[0]
+    named = [w for w in said[2:i] if w not in WHOSE_WORDS]
+    if not named:
         return None
-    found = _longest_grounded(said[i + n:], names)
-    return None if found is None else Question("what", found.id, relation, "person")
+    if any(taxonomy.is_a(w, "person") is True for w in words_of(" ".join(named))):
+        return " ".join(["who", "is", *said[i:]])
+    return " ".join(["what", *named, "are" if said[0] == "names" else "is", *said[i:]])
+
+
+WHOSE_WORDS = frozenset({"the", "a", "an", "this", "that", "these", "those", "all"})
+"""Words before the one a name is asked of that a question drops ("the name of *the* book": "what book")."""
+
+
+def _name_of(words: Sequence[str], names: MapNames) -> Question | None:
+    """"the name of the person in the office", "the names of the people at the door": who is there (lead, stop 42:
+    the run said "name" to the speaker, the message's head, and drove nowhere); "the name of the book on the
+    shelf": what is there (words43: the run said "name"), by the question :func:`name_asked` reads."""
+    asked = name_asked(" ".join(words), names.taxonomy)
+    return None if asked is None else _what(asked, names)
 
 
 def _longest_grounded(words: Sequence[str], names: MapNames) -> Referent | None:

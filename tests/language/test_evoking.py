@@ -192,3 +192,34 @@ def test_them_after_a_run_of_like_frames_is_each_of_their_things(library: Librar
     assert frames[1].elements["theme"].refers_to == (0, "theme") and not frames[1].elements["theme"].conjuncts
     frames = parse_command("open the fridge, take the milk and put it on the table", library).frames
     assert frames[2].elements["theme"].refers_to == (1, "theme") and not frames[2].elements["theme"].conjuncts
+
+
+@pytest.mark.parametrize(("text", "place", "ref"), [
+    ("go to the bedroom and tell me how many books are there", "bedroom", (0, "goal")),
+    ("walk into the garage, then count how many bikes there are", "garage", (0, "goal")),
+    ("head to the den and find out how many people are there right now", "den", (0, "goal")),
+    ("look in the pantry and let me know how many jars are there", "pantry", (0, "ground")),
+])
+def test_how_many_are_there_after_a_place_asks_of_that_place(library: Library, text: str, place: str,
+                                                             ref: tuple[int, str]) -> None:
+    """words43: the existential "there" was dropped and the whole house counted; it is where the clause before went,
+    as "count the books there" is."""
+    count = parse_command(text, library).frames[-1]
+    ground = count.elements["ground"]
+    assert count.frame == "Count" and (ground.text, ground.head, ground.refers_to) == ("there", place, ref)
+
+
+@pytest.mark.parametrize("text", [
+    "how many chairs are there?",                                        # no place before: existential, no place
+    "go to the kitchen and tell me how many cups are there on the table",  # a place said in the clause
+    "how many cups are there? then go to the kitchen",                   # the place comes after
+])
+def test_how_many_are_there_without_a_place_before_names_none(library: Library, text: str) -> None:
+    count = next(f for f in parse_command(text, library).frames if f.frame == "Count")
+    assert count.elements.get("ground") is None or count.elements["ground"].text == "the table"
+
+
+def test_how_many_there_are_of_nothing_said_reports_the_count_before(library: Library) -> None:
+    """"there" names no place where nothing is counted: the telling reports the count before (words41's merge)."""
+    assert _frames("count the cups in the sink and let me know how many there are", library) == [
+        ("Count", {"theme": "the cups", "ground": "the sink"})]

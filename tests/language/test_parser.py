@@ -1416,3 +1416,12 @@ def test_a_phrasal_verb_of_its_own_says_how_to_say_the_verbs_own_sense(library: 
         parse_command(command, library)
     assert f"to hang a thing somewhere, say where it goes ({example})" in caught.value.message
     assert [f.frame for f in parse_command("hang up my jacket on the hook", library).frames] == ["Place"]
+
+
+@pytest.mark.parametrize("text", ["if you", "in case you", "If you"])
+def test_a_subordinator_and_you_said_last_is_refused_cleanly(text: str, library: Library) -> None:
+    """words43: "if you" alone raised an IndexError (found by test_word_salad_parses_or_fails_cleanly's hypothesis):
+    the check for a verb of perceiving after "if you" read past the last word."""
+    with pytest.raises(CommandError) as refused:
+        parse_command(text, library)
+    assert refused.value.where.column == len(text) + 1

@@ -11,7 +11,7 @@ from seal_cli.language.parser import parse_command
 from seal_cli.maps.formats.map_server import load_map
 from seal_cli.planning.grounding import MapNames
 from seal_cli.planning.problem import build_problem, parse_to_plan
-from seal_cli.planning.questions import Question, fact_asked, read_questions, reports, told_first
+from seal_cli.planning.questions import Question, fact_asked, name_asked, read_questions, reports, told_first
 
 
 def asked(text: str, library: Library) -> list[tuple[str, Question]]:
@@ -72,10 +72,45 @@ def test_the_name_of_someone_somewhere_asks_who_is_there(text: str, question: Qu
     assert got and all(q == question for q in got)
 
 
-def test_the_name_of_a_thing_is_no_question_of_who_is_there(library: Library) -> None:
-    assert [q.kind for _, q in asked("tell me the name of the book on the sofa", library)] != ["what"]
+def test_the_name_of_a_thing_somewhere_asks_what_is_there(library: Library) -> None:
+    """words43: the run said "name" to the speaker; the question is what (such a thing) is there."""
+    assert asked("tell me the name of the book on the coffee table", library) == [
+        ("Tell(message=what_book_is_on_the_coffee_table, recipient=me)",
+         Question("what", "coffee_table_1", "on", "thing"))]
+    assert asked("tell me the names of the things in the fridge", library) == [
+        ("Tell(message=what_things_are_in_the_fridge, recipient=me)", Question("what", "fridge_1", "in", "thing"))]
     with pytest.raises(SealError, match="the apartment has no garden"):
         asked("tell me the name of the person in the garden", library)
+
+
+@pytest.mark.parametrize(("text", "frame"), [
+    ("tell me the names of the people in the kitchen", "Tell(message=who_is_in_the_kitchen, recipient=me)"),
+    ("tell Ben the name of the man at the desk", "Tell(message=who_is_at_the_desk, recipient=ben)"),
+    ("tell me the names", "Tell(message=name, recipient=me)"),          # a message is said once, plural or not
+])
+def test_a_message_asking_for_names_is_the_question_it_asks_and_said_once(text: str, frame: str,
+                                                                          library: Library) -> None:
+    """The plan's message was "name" ("names": a Tell of "name" and another of "another name")."""
+    assert [str(b) for b in _commanded(text, library)] == [frame]
+
+
+def _commanded(text: str, library: Library) -> list[object]:
+    m = load_map("apartment")
+    return list(build_problem(parse_command(text, library, vocabulary_of_map(m)), library, map=m.known()).commanded)
+
+
+@pytest.mark.parametrize(("message", "question"), [
+    ("the name of the person in the office", "who is in the office"),
+    ("the names of the people at the door", "who is at the door"),
+    ("name of the woman by the window", None),                     # "by" names no place a question looks at
+    ("the name of the biggest book on the shelf", "what biggest book is on the shelf"),
+    ("the names of the toys in the box", "what toys are in the box"),
+    ("the name of the person", None),                               # no place: no question of what is there
+    ("the name of in the box", None),
+    ("the gesture of the person in the office", None),              # not a name
+])
+def test_the_question_a_message_asking_for_names_asks(message: str, question: str | None, library: Library) -> None:
+    assert name_asked(message, library.taxonomy) == question
 
 
 def test_a_message_that_asks_nothing_of_the_map_is_no_question(library: Library) -> None:

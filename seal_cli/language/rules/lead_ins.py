@@ -419,8 +419,37 @@ def _you_would(s: State, j: int) -> bool:
         return False
     past = words[j + 1].lower
     lemma = verb_lemma(past)
-    return lemma is not None and lemma != past and not past.endswith(("ing", "s")) and \
-        s.verb_at(j + 1) is not None and s.np_starts(j + 2)
+    return lemma is not None and (lemma != past or past in participles(lemma)) and \
+        not past.endswith(("ing", "s")) and s.verb_at(j + 1) is not None and \
+        (s.np_starts(j + 2) or words[j + 2].lower in PREPOSITIONS)   # "if you *went to* the kitchen"
+    # a past the same as the base ("it would help a lot if you *put* the groceries away": words43) is a past too
+
+
+_IF_YOU_COULD = frozenset(["if you could", "if you would", "if you'd", "if u could", "if you could maybe"])
+"""A request said as the condition of a wish left unsaid or said after it ("*if you could* wipe the table, that would
+be great", "if you'd close the door"): a past modal, never "can" ("if you can find the keys, bring them": a
+condition)."""
+
+
+def _if_you_could(s: State, i: int) -> Match | None:
+    """"*If you could* wipe the kitchen table, that would be great", "if you would close the door": "if", "you" and a
+    past modal before a verb of the library, at the start of a sentence, with no clause of the library after a comma
+    of its sentence (what follows the comma is a wish, kept as a remark: "that would be great"), is politeness, as
+    "could you" is (words43: refused as a statement, "that would be great"). "if you could find the keys, bring
+    them to me" stays a condition: a command follows."""
+    words = s.words
+    if s.out and s.out[-1].tag not in (Tag.POLITE, Tag.SEP):
+        return None
+    n = _longest(s, i, _IF_YOU_COULD)
+    if not n or not s.verb_after(i + n):
+        return None
+    for k in range(i + n, len(words)):
+        low = words[k].lower
+        if low in END_MARKS:
+            break
+        if low in (",", ";") and s.verb_after(k + 1):
+            return None                  # "if you could find the keys, *bring* them": a condition and a command
+    return s.emit(i, n, Tag.POLITE)
 
 
 _YOU_MODALS = frozenset(["could", "can", "would", "will", "might", "should", "must"])
@@ -546,10 +575,18 @@ WATCHING_RULE = Rule("keep an eye on", _watching, (
     Example("keep an eye on the soup", "keep an eye on", Tag.VERB),
     Example("please keep watch over the baby", "keep watch over", Tag.VERB),
 ), frozenset(["keep"]), "'keep an eye on X', 'keep watch over X': check on X (LookAt)")
+IF_YOU_COULD = Rule("if you could, first", _if_you_could, (
+    Example("If you could wipe the kitchen table, that would be great.", "If you could", Tag.POLITE),
+    Example("if you'd close the door", "if you'd", Tag.POLITE),
+    Example("if you would bring me a towel, thanks", "if you would", Tag.POLITE),
+), frozenset(["if"]), "'if you could V X(, that would be great)': a request, politeness before the verb",
+    after=frozenset([START, Tag.POLITE, Tag.SEP]))
 POLITE_FRAME = Rule("if you could", _polite_frame, (
     Example("It would be great if you could close the door", "It would be great if you could", Tag.POLITE),
     Example("it'd be great if you'd close the door", "it'd be great if you'd", Tag.POLITE),
     Example("it would be nice if you opened the gate", "it would be nice if you", Tag.POLITE),
+    Example("It would help a lot if you put the groceries in the fridge", "It would help a lot if you", Tag.POLITE),
+    Example("I'd love it if you went to the kitchen", "I'd love it if you", Tag.POLITE),
     Example("I think you should follow her", "I think you should", Tag.POLITE),
     Example("I suppose you need to wash the cup", "I suppose you need to", Tag.POLITE),
     Example("it would be kind of you to open the gate", "it would be kind of you to", Tag.POLITE),

@@ -22,6 +22,7 @@ from seal_cli.language.english import (
     FINITE,
     FOUND_OUT,
     HERE_WORDS,
+    IMPERSONAL_WISHES,
     INFORMATION,
     KNOW_WISHES,
     LEFT_ASKED,
@@ -164,13 +165,37 @@ def _person_word(s: State, k: int) -> bool:
 def _where_did(s: State, i: int) -> Match | None:
     words = s.words
     where, auxiliaries, subjects = WHERE_DID
-    if i + 4 >= len(words) or WHERE_MEANS not in s.lexicon.units or words[i + 1].lower not in auxiliaries or \
-            words[i + 2].lower not in subjects and not _person_word(s, i + 2) or \
-            verb_lemma(words[i + 3].lower) != words[i + 3].lower or not s.np_starts(i + 4):
+    if i + 4 >= len(words) or WHERE_MEANS not in s.lexicon.units or words[i + 1].lower not in auxiliaries:
         return None
-    end = words[i + 3].end
-    return Match(4, (Word(s.text_of(words[i].start, end), words[i].start, end, Tag.VERB, WHERE_MEANS),),
+    v = i + 3 if words[i + 2].lower in subjects or _person_word(s, i + 2) else _person_said(s, i + 2)
+    if v is None or v + 1 >= len(words) or not s.np_starts(v + 1):
+        return None
+    said, lemma = words[v].lower, verb_lemma(words[v].lower)
+    perfect = words[i + 1].lower in ("have", "has") and lemma is not None and said in participles(lemma)
+    if lemma != said and not perfect:    # "where have the children *left* their shoes?": the perfect's participle
+        return None
+    end = words[v].end
+    return Match(v + 1 - i, (Word(s.text_of(words[i].start, end), words[i].start, end, Tag.VERB, WHERE_MEANS),),
                  expect=False, verb=WHERE_MEANS, using=False)
+
+
+def _person_said(s: State, k: int) -> int | None:
+    """Where a noun phrase of people at ``k`` that opens with a determiner or a possessive ends ("where did *the kids*
+    leave the ball?", "where does *my little brother* keep his shoes"): after a few words, a noun the taxonomy lists
+    as a person; None when the phrase names no person ("where did the cat ...")."""
+    words = s.words
+    j = k
+    while j < len(words) and words[j].lower in NP_OPENERS:
+        j += 1
+    if j == k:
+        return None
+    for h in range(j, min(j + 3, len(words))):
+        low = words[h].lower
+        if not low.isalpha() or low in CLOSED:
+            return None
+        if (noun_lemma(low) or low) in s.lexicon.people:
+            return h + 1
+    return None
 
 
 _CAN_YOU = frozenset(["can you", "could you", "can't you", "couldn't you", "you can", "you could"])
@@ -1012,6 +1037,25 @@ def _request(s: State, i: int) -> Match | None:
                      _unsaid(end, Tag.PRON, None, _SPEAKER)), expect=False, verb=REQUEST_MEANS, using=False)
 
 
+_HELP = frozenset(["help", "some help", "a little help", "a bit of help", "your help", "a hand", "a little hand",
+                   "some assistance", "your assistance"])
+"""Help asked for as a thing ("I could use *some help* finding my keys"): what the help is for is the request."""
+
+
+def _help_wished(s: State, i: int) -> Match | None:
+    """"*I could use some help* finding my keys", "I need a hand carrying the groceries to the car", "I'd love some help
+    putting the dishes away": a wish for help (``REQUESTS``, then :data:`_HELP`) with an -ing form of a verb of the
+    library after it asks for that deed; the wish and the help are politeness, the -ing form the verb (words43: a
+    Bring of "some help finding my keys"). "I need a hand" alone, "I need help with the box" stay wishes."""
+    words = s.words
+    n = _phrase(s, i, REQUESTS)
+    m = _phrase(s, i + n, _HELP) if n else 0
+    k = i + n + m
+    if not m or k >= len(words) or gerund_lemma(words[k].lower) is None or s.verb_at(k) is None:
+        return None
+    return Match(n + m, (merge(s.words, i, n + m, Tag.POLITE),), expect=True)
+
+
 _ASKED_FOR = frozenset(["can", "could", "may", "might"])
 _HAVING = frozenset(["have", "get"])
 
@@ -1105,7 +1149,7 @@ def _state_unit(s: State, low: str) -> str | None:
     return result[1] if result is not None else None        # "I'd like my tea *hot*": heat it
 
 
-_WISHES = WISHED_PLACED | frozenset(["i need", "we need"])
+_WISHES = WISHED_PLACED | IMPERSONAL_WISHES | frozenset(["i need", "we need"])
 _PSEUDO_CLEFTS = frozenset(f"what {wish} is" for wish in _WISHES)
 """A wish said as "*what I need is* the dishes counted" (a pseudo-cleft, words35): what follows "is" is the wish's
 object, as after "I need"; no question of what something is (``QUESTION`` leaves it)."""
@@ -1146,12 +1190,17 @@ def _wished_done(s: State, i: int) -> Match | None:
         if low in (",", ";", "and", "then") or low in BE_WORDS or low in FINITE:
             return None
         unit = verb_lemma(low)
+        two = None if s.np_starts(q + 2) else _done_with_particle(s, q + 1)   # "the cup *picked up* from the
+        # table": "pick up"; "the plate put *on the table*": a preposition and its phrase, "put"
         if unit is None or low not in participles(unit) or \
-                (unit,) not in s.lexicon.units.get(unit, ()) or words[q - 1].lower in NP_OPENERS or \
-                words[q - 1].lower in PREPOSITIONS:
+                (unit,) not in s.lexicon.units.get(unit, ()) and two is None or \
+                words[q - 1].lower in NP_OPENERS or words[q - 1].lower in PREPOSITIONS:
             continue
-        if words[q + 1].lower not in PREPOSITIONS or not s.np_starts(q + 1 + match_phrase(words, q + 1, PREPOSITIONS)):
+        after = q + 2 if two is not None else q + 1
+        if after >= len(words) or words[after].lower not in PREPOSITIONS or \
+                not s.np_starts(after + match_phrase(words, after, PREPOSITIONS)):
             return None
+        unit = two or unit
         start, stop = words[i].start, words[k - 1].end
         return Match(n, (Word(s.text_of(start, stop), start, stop, Tag.VERB, unit),), expect=False, verb=unit,
                      using=False, particle=(q, unit))
@@ -1198,6 +1247,9 @@ def _state_after(s: State, i: int, n: int, stop: int | None = None) -> Match | N
     if q <= k:                                   # the state ends the sentence, or a place follows it ("the
         return None                              # lights on in the living room": where they are)
     unit = _state_unit(s, words[q].lower)
+    done = _done_with_particle(s, q)
+    if done is not None:                         # "I'd like the heater *turned on*": the particle's unit, said whole
+        unit, q = done, q - 1
     before = words[q - 1].lower
     if unit is None or before in NP_OPENERS or before in PREPOSITIONS or \
             any(words[p].lower in BE_WORDS or words[p].lower in (",", "and", "then") and not _nouns_joined(s, p) or
@@ -1206,6 +1258,19 @@ def _state_after(s: State, i: int, n: int, stop: int | None = None) -> Match | N
     start, stop = words[i].start, words[k - 1].end
     return Match(n, (Word(s.text_of(start, stop), start, stop, Tag.VERB, unit),), expect=False, verb=unit,
                  using=False, particle=(q, unit))
+
+
+def _done_with_particle(s: State, q: int) -> str | None:
+    """The unit of two words a past participle and the particle at ``q`` say ("turned *on*": "turn on", "switched
+    off", "picked up"), when the library has it; None otherwise ("closed": one word, "left on": no unit "leave on").
+    The participle and the particle are then one split particle (:func:`~seal_cli.language.rules.verbs.split_unit`)."""
+    if not 1 <= q < len(s.words):
+        return None
+    low, done = s.words[q].lower, s.words[q - 1].lower
+    verb = verb_lemma(done)
+    if verb is None or done not in participles(verb):
+        return None
+    return f"{verb} {low}" if (verb, low) in s.lexicon.units.get(verb, ()) else None
 
 
 def _switched_by_unknown(s: State, i: int) -> Match | None:
@@ -1917,6 +1982,10 @@ WHERE_DID_RULE = Rule("where did I leave", _where_did, (
     Example("Where can I find the sponge?", "Where can I find", Tag.VERB),
     Example("where did dad put the scissors?", "where did dad put", Tag.VERB),
     Example("where does Priya keep her tea", "where does Priya keep", Tag.VERB),
+    Example("Where did the kids leave the football?", "Where did the kids leave", Tag.VERB),
+    Example("where have you put my glasses", "where have you put", Tag.VERB),
+    Example("Where has Tom left the keys?", "Where has Tom left", Tag.VERB),
+    Example("where does my little brother keep his shoes", "where does my little brother keep", Tag.VERB),
 ), WHERE_DID[0], "'where did I leave X', 'where do we keep X': find X")
 SEEN_ASKED_RULE = Rule("have you seen", _seen_asked, (
     Example("can you see my phone anywhere?", "see", Tag.VERB),
@@ -1952,12 +2021,15 @@ WISHED_DONE = Rule("a wish for a thing done", _wished_done, (
     Example("I want the apple brought to me", "I want", Tag.VERB),
     Example("I'd like the plate put on the table", "put", Tag.PARTICLE),
     Example("we need the chairs moved to the porch", "we need", Tag.VERB),
+    Example("I'd like the cup picked up from the table", "picked up", Tag.PARTICLE),
+    Example("we want the lights switched off in the hall", "switched off", Tag.PARTICLE),
     Example("what I want is the towels taken to the bathroom", "what I want is", Tag.VERB),
 ), first_words(_WISHED_STATES), "'I want X brought to me', 'I'd like X put on Y': bring X to me, put X on Y")
 WISHED_STATE = Rule("a wish for a thing's state", _wished_state, (
     Example("I'd like the blinds closed", "I'd like", Tag.VERB),
     Example("I want the lights off, please", "off", Tag.PARTICLE),
     Example("I need the door open", "I need", Tag.VERB),
+    Example("I'd like the heater turned on", "turned on", Tag.PARTICLE),
     Example("we'd like the lights on in the living room", "on", Tag.PARTICLE),
     Example("I'd like my tea hot", "hot", Tag.PARTICLE),
     Example("I want the door open and the radio on", "open", Tag.PARTICLE),
@@ -2018,6 +2090,10 @@ REQUEST = Rule("wish for a thing", _request, (
     Example("is there any chance of a blanket?", "is there any chance of", Tag.VERB),
     Example("any chance I could have a cushion", "any chance I could have", Tag.VERB),
 ), _REQUEST_FIRST, "'I'd like X', 'can I have X', 'I need X': bring X to the speaker")
+HELP_WISHED = Rule("a wish for help doing", _help_wished, (
+    Example("I could use some help finding my keys.", "I could use some help", Tag.POLITE),
+    Example("I need a hand carrying the groceries to the car", "I need a hand", Tag.POLITE),
+), _REQUEST_FIRST, "'I could use some help V-ing X': V X")
 REQUEST_FOR = Rule("may a person have a thing", _request_for, (
     Example("Can Jane have the salt?", "Jane", Tag.NAME),
     Example("could Robin get a towel from the bathroom?", "could", Tag.VERB),

@@ -12,7 +12,7 @@ from seal_cli.language.english import (
     PREPOSITIONS,
     TITLES,
 )
-from seal_cli.language.morphology import in_dictionary, in_verb_tables, noun_lemma, verb_lemma
+from seal_cli.language.morphology import in_dictionary, in_verb_tables, noun_lemma, participles, verb_lemma
 from seal_cli.language.rule import Example, Match, Rule
 from seal_cli.language.state import CLOSED, State, match_phrase, merge
 from seal_cli.language.tags import Tag
@@ -25,7 +25,21 @@ def _split_particle(s: State, i: int) -> Match | None:
     if unit is None:
         return None
     w = s.words[i]
+    n = split_unit(s, i, unit)
+    if n == 2:                                  # "I'd like the heater *turned on*": one particle of two words
+        end = s.words[i + 1].end
+        said = f"{w.lower} {s.words[i + 1].lower}"
+        return Match(2, (Word(s.text_of(w.start, end), w.start, end, Tag.PARTICLE, unit, said),))
     return Match(1, (Word(w.text, w.start, w.end, Tag.PARTICLE, unit, w.lower),))
+
+
+def split_unit(s: State, i: int, unit: str) -> int:
+    """How many words the split particle of ``unit`` at ``i`` is: two when they are the unit's verb in a past form and
+    its particle ("the heater *turned on*", a wish for a state: ``requests._done_with_particle``), else one."""
+    parts = unit.split()
+    if len(parts) != 2 or i + 1 >= len(s.words) or s.words[i + 1].lower != parts[1]:
+        return 1
+    return 2 if s.words[i].lower in participles(parts[0]) else 1
 
 
 DEPARTURE_OBJECT_SHARE = 0.9
@@ -148,6 +162,7 @@ def _moved_yourself(s: State, i: int) -> Match | None:
 SPLIT_PARTICLE = Rule("split particle", _split_particle, (
     Example("pick the cup up", "up", Tag.PARTICLE),
     Example("turn the lamp on", "on", Tag.PARTICLE),
+    Example("I'd like the heater turned on", "turned on", Tag.PARTICLE),
 ), None, "the particle of a verb split around its object, found when the verb was")
 USE = Rule("use X to V", _use, (
     Example("use a knife to slice the apple", "use", Tag.PREP),
