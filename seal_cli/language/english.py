@@ -151,6 +151,12 @@ POLITE = asked_negatively(frozenset(["please", "kindly", "could you", "can you",
                     "i'd like you to", "you should", "you must", "you need to", "you have to", "you will", *YOU_MUST,
                     "you can", "go ahead and", "robot", "hey", "ok", "okay", "now", "first", "firstly",
                     "just", "quickly", "quick", "carefully", "to", "try to", "attempt to", "then", "and", "also",
+                    # words42: a hedge on the robot's ability before the verb, anywhere a clause starts ("once you're
+                    # in the hall, *see if you can* find ...", "... and *try and* find ..."): the verb is the task
+                    *(f"{see} {whether} you {can}" for see in ("see", "check") for whether in ("if", "whether")
+                      for can in ("can", "could", "can manage to", "could manage to", "are able to")),
+                    *(f"see {whether} you're able to" for whether in ("if", "whether")),
+                    "try and", "try your best to", "do your best to",
                     "simply",
                     "let's", "let 's", "be sure to", "make sure to", "remember to", "go and", "come and", "go", "come",
                     "would you be so kind as to", "would you be kind enough to", "be so kind as to",
@@ -367,7 +373,7 @@ FIRST_LATER = frozenset(["after", "when", "whenever", "once", "as soon as"])
 TIME_UNITS = frozenset(["second", "seconds", "minute", "minutes", "hour", "hours", "moment", "moments", "while",
                         "day", "days", "week", "weeks"])
 """Measures of time: "for *three minutes*", "every *few minutes*" say how long or how often."""
-TIME_ASKED = (frozenset(["when", "whenever", "if", "once"]), frozenset(["get", "have", "find", "got"]),
+TIME_ASKED = (frozenset(["when", "whenever", "if", "once"]), frozenset(["get", "have", "find", "got", "had", "found"]),
               frozenset(["a", "an", "the", "some", "any", "spare", "free", "quick", "little", "few"]),
               TIME_UNITS | frozenset(["chance", "opportunity", "sec", "secs", "min", "mins", "tick", "time"]))
 """The robot's time asked for in a clause of the robot's own: "*when you get a sec*", "*if you have a spare

@@ -196,8 +196,8 @@ _DASHES = frozenset(["-", "–", "—", "--"])
 def time_asked(words: Sequence[Word], i: int) -> int:
     """How many words "when you get a sec" (``english.TIME_ASKED``) takes at ``i`` (0: none)."""
     subordinators, verbs, quantity, measures = TIME_ASKED
-    if i + 3 >= len(words) or words[i].lower not in subordinators or words[i + 1].lower != "you" or \
-            words[i + 2].lower not in verbs:
+    if i + 3 >= len(words) or words[i].lower not in subordinators or words[i + 1].lower not in ("you", "you've") or \
+            words[i + 2].lower not in verbs:          # "when you've got a sec": the perfect of having
         return 0
     k = i + 3
     while k < len(words) and words[k].lower in quantity:

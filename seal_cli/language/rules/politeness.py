@@ -440,6 +440,7 @@ ASKED_AGAIN_RULE = Rule("the question asked again", _asked_again, (
 FORMULA = Rule("politeness formula", _formula, (
     Example("When you get a chance, could you close the window?", "When you get a chance,", Tag.POLITE),
     Example("Hey, when you get a sec, could you grab me a soda?", "when you get a sec,", Tag.POLITE),
+    Example("once you've got a minute, fold the towels", "once you've got a minute,", Tag.POLITE),   # words42
     Example("bring it to me when you can", "when", ""),
 ), FORMULA_FIRST, "politeness said as a clause of its own: before the command, politeness; after it, dropped")
 WHILE_HOLDING = Rule("while or after first", _while_holding, (
@@ -453,6 +454,8 @@ _POLITE_FIRST = first_words(POLITE)
 """Where politeness can start (its rule's gate)."""
 POLITENESS = Rule("politeness", _politeness, (
     Example("could you please bring me a cup", "could you please", Tag.POLITE),
+    Example("once you're upstairs, see if you can find my glasses", "see if you can", Tag.POLITE),      # words42
+    Example("go to the garage and try and find the pump", "try and", Tag.POLITE),
     Example("robot, go to the kitchen", "robot,", Tag.POLITE),
     Example("how about closing the window", "how about", Tag.POLITE),
     Example("do you mind switching the fan on", "do you mind", Tag.POLITE),
