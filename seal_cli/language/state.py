@@ -828,7 +828,7 @@ class State:
             end += 1
         if end >= len(words):
             if not said or stated and any(self.verb_at(k) is not None and words[k - 1].lower not in NP_OPENERS
-                                          for k in range(i + 1, end)):
+                                          and not self._state_in_progress(i, k) for k in range(i + 1, end)):
                 return None                              # a statement with a verb of the library in it: said
             return self._aside(i, end - i, (words[i].start, words[-1].end))
             # "pour it into the cup... *the blue one*": a fragment after; "follow Adel? *He is at the entrance*"
@@ -838,6 +838,20 @@ class State:
                 not any(self.verb_at(k) is not None or self.asks_at(k) for k in range(end + 1, len(words))):
             return None                                  # no sentence holds a command: the error says so
         return self._aside(i, end + 1 - i, (words[i].start, words[end].end))
+
+    def _state_in_progress(self, i: int, k: int) -> bool:
+        """Whether the verb at ``k``, in a statement starting at ``i``, says what someone other than the robot is
+        doing right now (words42): its "-ing" form right after a form of "be", and the subject not "you" ("take
+        Robin to the office. *she's waiting* at the entrance", "*Anna is waiting* in the hall": where she is, no
+        task). "you're waiting ..." may tell the robot, and a base form anywhere ("Anna is waiting for you to bring
+        her a cup") is a task: both stay said."""
+        words = self.words
+        low = words[k].lower
+        return k > i and low.endswith("ing") and (words[k - 1].lower in BE_WORDS or
+                                                     words[k - 1].lower.endswith(("'re", "'m", "'s"))) and \
+            not any(w.lower.startswith("you") for w in words[i:k]) and \
+            not any(self.verb_at(j) is not None and verb_lemma(words[j].lower) == words[j].lower
+                    for j in range(k + 1, len(words)) if words[j].lower not in END_MARKS)
 
     def dislocated(self, i: int) -> Match | None:
         """A noun phrase said first, then a comma and a command that takes it up by a pronoun ("*The sponge

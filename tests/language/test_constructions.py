@@ -3998,3 +3998,31 @@ def test_a_unit_another_frame_lists_said_alone_is_that_frames(library: Library) 
     """words40: "leave" alone is going away because only Place lists it; "return" is Go's too, and stays its."""
     parse = parse_command("go to the shed and return", library)
     assert [(f.frame, f.lexical_unit) for f in parse.frames][-1] == ("Go", "return")
+
+
+
+@pytest.mark.parametrize(("text", "want"), [
+    ("once you've got a minute, wash the towels", [("Clean", {"theme": "towel"})]),
+    ("when you're upstairs, see if you can find my glasses", [("Find", {"theme": "glass"})]),
+    ("go to the garage and try and find the pump", [("Go", {"goal": "garage"}), ("Find", {"theme": "pump"})]),
+    ("see whether you're able to open the hatch", [("Open", {"theme": "hatch"})]),
+])
+def test_hedges_on_the_robots_time_and_ability_leave_the_verb(
+        text: str, want: list[tuple[str, dict[str, str]]], library: Library) -> None:
+    """words42: "when you've got a sec" is the robot's time asked ("got" was a Pick of "a sec"); "see if you can",
+    "try and" hedge the verb after a subordinate clause or "and" too ("see" was an unknown verb there)."""
+    assert_reads(text, want, library)
+
+
+@pytest.mark.parametrize(("text", "want"), [
+    ("drive Kim to the station. she's waiting by the gate", [("Guide", {"theme": "Kim", "goal": "station"})]),
+    ("bring Kim a towel. I'm waiting in the hall", [("Bring", {"theme": "towel", "recipient": "Kim"})]),
+    ("bring Kim a towel. Kim is waiting for you to open the door", None),     # a task inside: said, refused
+    ("bring Kim a towel. you're waiting in the hall", None),                  # the robot may be told: refused
+])
+def test_what_someone_is_doing_said_after_the_command_is_a_remark(
+        text: str, want: list[tuple[str, dict[str, str]]] | None, library: Library) -> None:
+    """words42: a sentence after the command that says what someone (not the robot) is doing now, by "be" and an
+    "-ing" form of a library verb ("she's *waiting* at the entrance"), states where they are: no task. It was
+    refused as a statement holding a verb of the library."""
+    assert_reads(text, want, library)
