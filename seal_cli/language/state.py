@@ -1215,7 +1215,8 @@ class State:
             if not finite:
                 finite = lemma is not None and low not in NP_OPENERS and k > j and \
                     words[k - 1].lower not in NP_OPENERS and words[k - 1].lower not in MODALS and \
-                    words[k - 1].lower != "to" or low in BE_WORDS
+                    words[k - 1].lower != "to" or low in BE_WORDS or \
+                    "'" in low[1:] and "'" + low.split("'", 1)[1] in CONTRACTED     # "if *you're* in the hall"
                 continue            # "before *the guests* arrive", "when *guests* arrive": the subject (words30)
             before = words[k - 1].lower
             if before in NP_OPENERS or before in MODALS or before in BE_WORDS or \

@@ -4026,3 +4026,17 @@ def test_what_someone_is_doing_said_after_the_command_is_a_remark(
     "-ing" form of a library verb ("she's *waiting* at the entrance"), states where they are: no task. It was
     refused as a statement holding a verb of the library."""
     assert_reads(text, want, library)
+
+
+@pytest.mark.parametrize(("text", "want"), [
+    ("if you're in the garage anyway fetch me the pump", [("Bring", {"theme": "pump", "recipient": "me"})]),
+    ("if we're in the hall open the door", [("Open", {"theme": "door"})]),
+    ("when you reach the porch greet everybody there", [("Go", {"goal": "porch"}), ("Greet", {"theme": "everybody",
+                                                                                            "ground": "porch"})]),
+])
+def test_a_condition_said_first_without_a_comma_ends_at_the_command(
+        text: str, want: list[tuple[str, dict[str, str]]], library: Library) -> None:
+    """words42: a subject contracted with its verb ("if *you're* in the garage") is the condition's finite verb, so
+    the verb after it starts the command (the whole sentence was the condition); an indefinite pronoun ("greet
+    *everybody*") opens the object of a verb said without a joint, as "it" does."""
+    assert_reads(text, want, library)

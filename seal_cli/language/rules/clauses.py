@@ -286,7 +286,10 @@ SEPARATOR = Rule("separator", _separator, (
 ), SEP_FIRST, "'and', ',', 'then', ... joining clauses or noun phrases")
 
 
-_OBJECT_STARTS = frozenset(["it", "them", "him", "her", "me", "us"])
+_OBJECT_STARTS = frozenset(["it", "them", "him", "her", "me", "us", "everyone", "everybody", "someone", "somebody",
+                            "anyone", "anybody", "everything", "something"])
+"""Pronouns that open the object of a verb said without a joint ("... in the hall *greet everyone* there": words42
+added the indefinite ones)."""
 
 
 def _unjoined(s: State, i: int) -> Match | None:
