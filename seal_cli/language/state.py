@@ -45,6 +45,7 @@ from seal_cli.language.english import (
     PARTICLES,
     PATH_PREPOSITIONS,
     PERCEIVING,
+    PLACE_MEANS,
     POLITE,
     POLITE_FORMULAE,
     POSSESSIVES,
@@ -1467,7 +1468,7 @@ class State:
             return Match(j - i, (merge(words, i, j - i, Tag.SEP),))
         if low == "," and span == 1 and self._between_adjectives(i, j):
             return Match(1)                # "a round, gold object": one noun phrase, its head "object"
-        if low in ("and", ",", ";") and self._obliged_at(j):
+        if low in ("and", ",", ";") and self._obliged_at(j) and not self.things_listed():
             return Match(j - i, (merge(words, i, j - i, Tag.SEP),), expect=True)   # "..., the cups go on the shelf"
         if low == "," and j == i + 2 and words[i + 1].lower == "and" and self.prev_tag() in ("WORD", "NAME") and \
                 self.person_at(j) and match_phrase(words, j + 1, ADDITIVES):
@@ -1497,6 +1498,16 @@ class State:
         if low in ("and", "then", ",", ";", "or"):
             return Match(j - i, (merge(words, i, j - i, Tag.SEP),))
         return None
+
+    def things_listed(self) -> bool:
+        """Whether the clause so far is only the things of "the plate and the bowl belong on the shelf": its verb
+        the unsaid "put" of a thing said to belong somewhere, and no more than noun phrases after it (words42: the
+        "and" joins the things, the obligation is the list's)."""
+        if self.verb_index < 0:
+            return False
+        verb = self.out[self.verb_index]
+        return not verb.text and verb.info == PLACE_MEANS and \
+            all(w.tag in (Tag.DET, Tag.WORD, Tag.POSS, Tag.NUM, Tag.AND_NP) for w in self.out[self.verb_index + 1:])
 
     def _obliged_at(self, j: int) -> bool:
         """Whether a noun phrase and what it should do ("the cups *go* on the shelf", ``english.OBLIGED``) start at

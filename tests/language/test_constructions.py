@@ -4040,3 +4040,17 @@ def test_a_condition_said_first_without_a_comma_ends_at_the_command(
     the verb after it starts the command (the whole sentence was the condition); an indefinite pronoun ("greet
     *everybody*") opens the object of a verb said without a joint, as "it" does."""
     assert_reads(text, want, library)
+
+
+@pytest.mark.parametrize(("text", "want"), [
+    ("the saucers all go in the cupboard", [("Place", {"theme": "saucer", "goal": "cupboard"})]),
+    ("the jug, the mugs and the teapot belong on the tray", [("Place", {"theme": "jug", "goal": "tray"})]),
+    ("the jug and the teapot go on the tray", [("Place", {"theme": "jug", "goal": "tray"})]),
+    ("the jugs go on the tray, the mugs go in the sink", [("Place", {"theme": "jug", "goal": "tray"}),
+                                                         ("Place", {"theme": "mug", "goal": "sink"})]),
+])
+def test_things_listed_said_to_go_somewhere_are_put_there(
+        text: str, want: list[tuple[str, dict[str, str]]], library: Library) -> None:
+    """words42: "X, Y and Z (all) go in W" puts them all there; the list was split into clauses at its comma and its
+    "and" (each read as a thing said to go somewhere), and "all go" was refused as lost words."""
+    assert_reads(text, want, library)

@@ -1250,8 +1250,11 @@ _SUPPOSED = frozenset(["should be", "must be", "ought to be"])
 putting; of a state they ask it ("the door should be closed")."""
 _NEEDS = frozenset(["needs", "need", "wants", "want"])
 """Obligations said with a verb's -ing form after them ("the cup *needs* washing", "the shirt wants ironing")."""
-_OBLIGED_WORDS = 8
-"""The most words the thing's noun phrase may have before what it should do."""
+_OBLIGED_WORDS = 14
+"""The most words the thing's noun phrase may have before what it should do ("the knife, the fork and the spoon all":
+words42 let its things be listed)."""
+_FLOATING = frozenset(["all", "both", "each"])
+"""A quantifier said after the things, before what they should do ("the cups *all* go in the cupboard")."""
 
 
 def _obliged_phrase(s: State, i: int) -> tuple[int, int] | None:
@@ -1266,8 +1269,13 @@ def _obliged_phrase(s: State, i: int) -> tuple[int, int] | None:
         if n:
             before = words[k - 1].lower
             alone = k - 1 == i and first in _OBLIGED_SUBJECTS             # "*this* needs to go in the bin"
+            if before in _FLOATING and k - 2 > i and words[k - 2].lower not in NP_OPENERS:
+                return k - 1, n + 1                 # "the cups *all go* in the cupboard": the quantifier dropped too
             return (k, n) if alone or before not in NP_OPENERS else None
         low = words[k].lower
+        if low in (",", "and") and k + 1 < len(words) and words[k + 1].lower in NP_OPENERS and \
+                words[k - 1].lower.isalpha() and words[k - 1].lower not in NP_OPENERS:
+            continue                              # "the knife, the fork and the spoon go ...": things listed (words42)
         if not low.isalpha() or low in BE_WORDS or low in QUESTION_WORDS or low in s.lexicon.people or \
                 noun_lemma(low) in s.lexicon.people or \
                 s.verb_at(k) is not None and words[k - 1].lower not in DETERMINERS:
@@ -1288,7 +1296,7 @@ def _obliged_unit(s: State, k: int, n: int) -> tuple[str, int | None] | None:
         return None
     prep = PREPOSITIONS.get(words[m].lower)
     to_place = prep in WISHED_PLACES or prep == "to" and m + 1 < end and not capitalised(words[m + 1])
-    if " ".join(w.lower for w in words[k:m]) in _SUPPOSED:
+    if " ".join(w.lower for w in words[k + (words[k].lower in _FLOATING):m]) in _SUPPOSED:
         to_place = False                          # "it should be in the dining room": where to look, no command
     if to_place and m + 1 < end and s.np_starts(m + 1) and words[m + 1].lower not in PRONOUNS and \
             noun_lemma(words[end - 1].lower) not in s.lexicon.people and \
@@ -1334,8 +1342,8 @@ def _obliged_after_comma(s: State, i: int) -> Match | None:
     """"put the dirty cups in the dishwasher*,* the clean ones go in the cupboard": a comma before a thing said to
     belong somewhere (:func:`_obliged`) joins a clause of its own, not a noun of a list ("the dishwasher, the clean
     ones" was a list, and "go" a Go of the cupboard, the cups' place lost; words30)."""
-    if s.expect_verb or i + 1 >= len(s.words) or _obliged(s, i + 1) is None:
-        return None
+    if s.expect_verb or i + 1 >= len(s.words) or s.things_listed() or _obliged(s, i + 1) is None:
+        return None                               # "the knife, the fork ... go in ...": things listed (words42)
     return Match(1, (s.words[i].tagged(Tag.SEP),), expect=True)
 
 
@@ -1981,6 +1989,8 @@ OBLIGED_RULE = Rule("where a thing should go", _obliged, (
     Example("the bowl should go in the dishwasher", "", Tag.VERB),
     Example("The milk belongs in the fridge.", "The", Tag.DET),
     Example("the strawberry jello needs to go to the pantry", "", Tag.VERB),
+    Example("the saucers all go in the cupboard", "", Tag.VERB),                   # words42
+    Example("the jug, the mugs and the teapot belong on the tray", "", Tag.VERB),  # words42
     Example("the front door should be closed", "closed", Tag.PARTICLE),
     Example("the cup on the coffee table needs washing", "washing", Tag.PARTICLE),
 ), lambda low: low in NP_OPENERS or low in _OBLIGED_SUBJECTS,
@@ -2000,7 +2010,8 @@ AGENT_DROPPED = Rule("'by you' after a command said in the passive", _agent_drop
 ), frozenset(["by"]), "'by you' ending a clause said in the passive: the robot does it, no place")
 OBLIGED_DROPPED = Rule("the obligation after the thing", _obliged_dropped, (
     Example("the bowl should go in the dishwasher", "should go", ""),
-), first_words(OBLIGED), "the 'should go' of 'the bowl should go in Y', dropped: 'put' was unsaid before")
+    Example("the saucers all go in the cupboard", "all go", ""),                     # words42
+), first_words(OBLIGED) | _FLOATING, "the 'should go' of 'the bowl should go in Y', dropped: 'put' was unsaid before")
 WISHED_PLACED_RULE = Rule("a wish for where a thing is", _wished_placed, (
     Example("I want the mug on the shelf", "I want", Tag.VERB),
     Example("I'd like the books in the box, please", "I'd like", Tag.VERB),
