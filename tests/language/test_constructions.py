@@ -4054,3 +4054,15 @@ def test_things_listed_said_to_go_somewhere_are_put_there(
     """words42: "X, Y and Z (all) go in W" puts them all there; the list was split into clauses at its comma and its
     "and" (each read as a thing said to go somewhere), and "all go" was refused as lost words."""
     assert_reads(text, want, library)
+
+
+@pytest.mark.parametrize(("text", "want"), [
+    ("take doris from the porch to the car", [("Guide", {"theme": "doris", "source": "porch", "goal": "car"})]),
+    ("take cheezits from the porch to the car", [("Bring", {"theme": "cheezits", "source": "porch",
+                                                           "goal": "car"})]),
+])
+def test_a_name_in_lower_case_may_end_in_s(
+        text: str, want: list[tuple[str, dict[str, str]]], library: Library) -> None:
+    """words42: a word no dictionary lists, ending in "is", "us" or "ss", is no plural: a name after "take" ("paris"
+    was a thing brought); "cheezits" stays things."""
+    assert_reads(text, want, library)

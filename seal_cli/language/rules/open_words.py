@@ -199,6 +199,11 @@ def _title_in_lower_case(s: State, i: int) -> Match | None:
     return Match(2, (Word(s.text_of(w.start, words[i + 1].end), w.start, words[i + 1].end, Tag.NAME),))
 
 
+_NO_PLURAL_ENDINGS = ("is", "us", "ss")
+"""Endings of a word no dictionary lists that make no English plural (words42): "paris", "chris", "marcus", "ross" end
+in "s" and are no more than one, as "cheezits" and "oreos" are."""
+
+
 def _lower_case_name(s: State, i: int) -> Match | None:
     """A word neither an English dictionary nor the library's taxonomy lists, alone after "to" or "for" in a
     clause whose verb may have a recipient ("deliver the knife to *jamie*", "fetch a towel for *jo*"), or
@@ -210,7 +215,8 @@ def _lower_case_name(s: State, i: int) -> Match | None:
     a verb only frames of people have too: "meet *morgan* at the door", a horse; not "home",
     an adverb too, nor a thing the taxonomy knows: "bring it to bed"; "with" right after the verb: "put the plate
     with *apple* in the fridge" says what the plate holds), or right after a verb whose
-    frame's first element is a person ("take *jordan* to the bedroom", unless it ends in "s" as plurals do:
+    frame's first element is a person ("take *jordan* to the bedroom", unless it ends in "s" as plurals do, not in
+    "is", "us", "ss" ("take *paris* to the desk"), which none does:
     "take cheezits to the kitchen" stays a thing): a name written in lower case. A word the map or the
     vocabulary names as a person is a name wherever it is (the parser writes it capitalised for the
     tagger)."""
@@ -222,7 +228,7 @@ def _lower_case_name(s: State, i: int) -> Match | None:
             (str(s.out[-1].info) in s.lexicon.escorts or told)):
         return None                      # "take *jordan* to the bedroom": right after a verb whose object is a person
     verb = str(s.out[s.verb_index].info)
-    if s.prev_tag() == Tag.VERB and low.endswith("s"):
+    if s.prev_tag() == Tag.VERB and low.endswith("s") and not low.endswith(_NO_PLURAL_ENDINGS):
         return None
     near = s.prev_tag() == Tag.PREP and s.out[-1].info == "near" and f"{verb} with" in s.lexicon.escorts
     if s.prev_tag() == Tag.PREP and not (s.out[-1].info in ("to", "for") and verb in s.lexicon.recipients or
@@ -304,6 +310,7 @@ LOWER_CASE_NAME = Rule("name in lower case", _lower_case_name, (
     Example("fetch a towel for jo", "jo", Tag.NAME),
     Example("go with sam to the bedroom", "sam", Tag.NAME),
     Example("take jordan to the bedroom", "jordan", Tag.NAME),
+    Example("take doris from the porch to the car", "doris", Tag.NAME),          # words42: no plural's ending
     Example("stay close to morgan", "morgan", Tag.NAME),
     Example("deliver the cup to robin in the kitchen", "robin", Tag.NAME),
     Example("go with angel to the kitchen", "angel", Tag.NAME),
