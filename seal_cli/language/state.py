@@ -1741,11 +1741,21 @@ class State:
         "meeting room *three*", "table *9*"): one number (digits, or a number word other than "one"),
         with no noun after it to count ("give the kids *two* apples" counts)."""
         low = self.words[i].lower
+        if low == "one" and self._one_labels(i):
+            return True
         if not (low.isascii() and low.isdigit() or low in NUMBERS and low not in VAGUE_NUMBERS):
             return False
         if i + 1 < len(self.words) and self.words[i + 1].lower in TIME_UNITS:
             return False                                        # "wait ten minutes"
         return i + 1 >= len(self.words) or not self.noun_follows(i + 1) or self.words[i + 1].lower in NUMBERS
+
+    def _one_labels(self, i: int) -> bool:
+        """Whether the "one" at ``i`` names a numbered place with the bare singular noun before it, right after a
+        preposition, ending the phrase ("go to *table one*", "put it in box one": words42; it was the pronoun of
+        "the red one", with no element to take it). Only there: "give the kids one", "bring Anna one" count."""
+        out = self.out
+        return len(out) >= 2 and out[-1].tag == Tag.WORD and out[-2].tag == Tag.PREP and \
+            not is_plural(out[-1].lower) and not self.noun_follows(i + 1)
 
     def noun_follows(self, i: int) -> bool:
         """Whether an open-class word (a noun or adjective) starts at ``i``."""

@@ -4066,3 +4066,11 @@ def test_a_name_in_lower_case_may_end_in_s(
     """words42: a word no dictionary lists, ending in "is", "us" or "ss", is no plural: a name after "take" ("paris"
     was a thing brought); "cheezits" stays things."""
     assert_reads(text, want, library)
+
+
+def test_a_place_numbered_one_by_a_word_is_a_label(library: Library) -> None:
+    """words42: "go to table one" was refused at "one" (a pronoun no element takes); after a preposition and a bare
+    singular noun it numbers the place, as "table 1" does (the planner grounds "table one" to table_1)."""
+    assert texts("go to table one", library) == [("Go", {"goal": "table one"})]
+    assert texts("put the cup in box one", library) == [("Place", {"theme": "the cup", "goal": "box one"})]
+    assert texts("bring Anna one", library)[0][1]["theme"] == "one"           # a thing counted, as before
