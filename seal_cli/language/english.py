@@ -483,6 +483,12 @@ wouldn't mind* a biscuit") or as a chance asked ("*any chance I could have* a cu
 tea?") is one too, and so are "I fancy X", and "could I possibly have X" (words30)."""
 REQUEST_MEANS = "bring"
 WISHED_PLACED = frozenset(["i want", "i'd like", "i would like", "we want", "we'd like", "we would like"])
+FOLLOW_ASKED = ("guide", frozenset(["ask", "tell", "get", "invite"]),
+                frozenset([f"to {verb} {who}" for verb in ("follow", "come with", "go with", "walk with")
+                           for who in ("you", "me", "us")]))
+"""A person asked to follow the robot ("*ask* Anna *to follow you* to the kitchen", "tell the man in the hat to come
+with you"): the robot leads them, the unit ``FOLLOW_ASKED[0]`` (words42: it was a Tell of "follow you to the
+kitchen", nobody led). The verbs of asking, and what the person is asked."""
 WISHED_PLACES = frozenset(["on", "onto", "in", "into", "inside", "under"])
 PLACE_MEANS = "put"
 """"*I want* the mug *on* the shelf", "I'd like the books in the box": the speaker's wish for where a thing is,

@@ -4074,3 +4074,21 @@ def test_a_place_numbered_one_by_a_word_is_a_label(library: Library) -> None:
     assert texts("go to table one", library) == [("Go", {"goal": "table one"})]
     assert texts("put the cup in box one", library) == [("Place", {"theme": "the cup", "goal": "box one"})]
     assert texts("bring Anna one", library)[0][1]["theme"] == "one"           # a thing counted, as before
+
+
+@pytest.mark.parametrize(("text", "want"), [
+    ("ask Noor to follow you to the garage", [("Guide", {"theme": "Noor", "goal": "garage"})]),
+    ("tell the boy in the green coat to come with you", [("Guide", {"theme": "boy"})]),
+    ("ask Noor to fetch you a towel", [("Tell", {"message": "fetch you a towel", "recipient": "Noor"})]),
+])
+def test_a_person_asked_to_follow_the_robot_is_guided(
+        text: str, want: list[tuple[str, dict[str, str]]], library: Library) -> None:
+    """words42: "ask X to follow you (to Y)" leads X (to Y); it was a Tell of "follow you to Y", nobody led. Anything
+    else asked stays told."""
+    assert_reads(text, want, library)
+
+
+def test_from_there_is_where_the_motion_starts(library: Library) -> None:
+    """words42: "from there" was refused ("there" after a preposition); it is the source, the place said before."""
+    assert frames("go to the shed and get a rake from there", library) == [
+        ("Go", {"goal": "shed"}), ("Pick", {"theme": "rake", "source": "shed"})]
