@@ -4092,3 +4092,19 @@ def test_from_there_is_where_the_motion_starts(library: Library) -> None:
     """words42: "from there" was refused ("there" after a preposition); it is the source, the place said before."""
     assert frames("go to the shed and get a rake from there", library) == [
         ("Go", {"goal": "shed"}), ("Pick", {"theme": "rake", "source": "shed"})]
+
+
+@pytest.mark.parametrize(("text", "want"), [
+    ("follow him wherever he goes", [("Follow", {"theme": "him"})]),
+    ("stay with Jo everywhere she walks and then come back", [("Follow", {"theme": "Jo"}), ("Go", {})]),
+])
+def test_a_free_relative_of_place_after_the_clause_is_a_remark(
+        text: str, want: list[tuple[str, dict[str, str]]], library: Library) -> None:
+    """words42: "wherever he goes" was refused at "he" (a pronoun no element takes)."""
+    assert_reads(text, want, library)
+
+
+def test_a_question_whether_said_without_a_joint_is_a_clause(library: Library) -> None:
+    """words42: "see" after a phrase was read as a noun of it ("the shelf see"), the question as a condition."""
+    assert frames("walk to the shelf see if there are any cups and bring me one", library) == [
+        ("Go", {"goal": "shelf"}), ("Find", {"theme": "cup"}), ("Bring", {"theme": "cup", "recipient": "me"})]

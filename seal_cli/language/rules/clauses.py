@@ -292,6 +292,27 @@ _OBJECT_STARTS = frozenset(["it", "them", "him", "her", "me", "us", "everyone", 
 added the indefinite ones)."""
 
 
+_FREE_PLACES = frozenset(["wherever", "anywhere", "everywhere"])
+"""Words that open a free relative of place ("follow him *wherever* he goes")."""
+_FREE_SUBJECTS = frozenset(["he", "she", "they", "it", "i", "we"])
+
+
+def _wherever(s: State, i: int) -> Match | None:
+    """"follow him *wherever he goes*", "follow Jo everywhere she walks": a free relative of place, a subject and its
+    verb, after a clause with its object says where the robot follows, which the frame says already: a remark
+    (words42: "he" was a pronoun no element took). Only up to the clause's end, with no verb of the library's base
+    form in it after the subject's own ("wherever he goes, bring a cup" keeps its command)."""
+    words = s.words
+    if s.verb_index < 0 or s.prev_tag() not in (Tag.WORD, Tag.NAME, Tag.PRON) or i + 2 >= len(words) or \
+            words[i + 1].lower not in _FREE_SUBJECTS:
+        return None
+    end = s.cond_end(i + 1)
+    if end < i + 3 or any(s.verb_at(k) is not None and verb_lemma(words[k].lower) == words[k].lower
+                          for k in range(i + 3, end)):
+        return None
+    return Match(end - i, remarks=((words[i].start, words[end - 1].end),))
+
+
 def _unjoined(s: State, i: int) -> Match | None:
     """A verb of the library in its base form right after a phrase, before its own object ("meet Jo at the
     counter *escort her* back", "pick up the cup *bring it* to me"): a new clause said without "and"."""
@@ -497,6 +518,11 @@ VERB_AFTER_JOINT = Rule("verb after a joint", _verb_after_joint, (
     Example("head back to the kitchen and tidy up", "tidy", Tag.WORD),
 ), frozenset(VERB_JOINTS), "a bare word mostly used as a verb after 'and', 'then' or ',', before what a verb takes: "
    "a clause of its own, not a noun of a list", after=frozenset([Tag.WORD, Tag.NAME, Tag.PRON, Tag.HERE, Tag.PARTICLE]))
+WHEREVER = Rule("wherever they go", _wherever, (
+    Example("follow him wherever he goes", "wherever", ""),
+    Example("stay with Jo everywhere she walks", "everywhere", ""),
+), _FREE_PLACES, "'wherever he goes' after a clause: a free relative of place, a remark",
+   after=frozenset([Tag.WORD, Tag.NAME, Tag.PRON]))
 UNJOINED = Rule("clause without a joint", _unjoined, (
     Example("meet Jo at the counter escort her back", "escort", Tag.VERB),
     Example("pick up the cup bring it to me", "bring", Tag.VERB),

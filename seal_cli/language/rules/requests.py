@@ -713,6 +713,19 @@ def _asked_whether(s: State, i: int) -> Match | None:
     return _check_whether(s, i, _ASKERS)
 
 
+def _whether_unjoined(s: State, i: int) -> Match | None:
+    """"go over to the table *see if* there are any fruits and bring me one": a question whether (:func:`_asked_whether`)
+    said right after a clause's phrase with no joint starts a clause of its own (words42: "see" was read as a noun
+    of the table, the question a condition, and nothing was sought)."""
+    if s.verb_index < 0 or s.prev_tag() not in (Tag.WORD, Tag.NAME, Tag.PRON, Tag.LABEL):
+        return None
+    found = _asked_whether(s, i)
+    if found is None or not found.consumed or not found.words or found.words[0].tag != Tag.VERB:
+        return None
+    w = s.words[i]
+    return found._replace(words=(Word("", w.start, w.start, Tag.SEP), *found.words))
+
+
 def _state_asked(s: State, i: int) -> Match | None:
     """The state a yes/no question asks ("open" of "is the fridge open?", "is closed" of "check if the door is
     closed"): one ``COND`` word of info ``ASKED``, the "is" dropped."""
@@ -2082,6 +2095,10 @@ STATE_QUESTION = Rule("is X in a state", _state_question, (
     Example("is the washing machine running?", "running", Tag.COND),
     Example("is grandpa sitting down or standing up?", "sitting down or standing up", Tag.COND),
 ), _WHETHER_IS, "'is X open?': check X (LookAt), the state asked kept")
+WHETHER_UNJOINED = Rule("asked whether, no joint", _whether_unjoined, (
+    Example("go over to the shelf see if there are any cups and bring me one", "see if there are", Tag.VERB),
+), first_words(_ASKERS), "'see if ...' right after a phrase: a clause of its own, said without 'and'",
+   after=frozenset([Tag.WORD, Tag.NAME, Tag.PRON, Tag.LABEL]))
 ASKED_WHETHER = Rule("asked whether", _asked_whether, (
     Example("Could you check if the door is closed?", "check if", Tag.VERB),
     Example("tell me whether the stove is still on", "tell me whether", Tag.VERB),
