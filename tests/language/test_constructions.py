@@ -4108,3 +4108,20 @@ def test_a_question_whether_said_without_a_joint_is_a_clause(library: Library) -
     """words42: "see" after a phrase was read as a noun of it ("the shelf see"), the question as a condition."""
     assert frames("walk to the shelf see if there are any cups and bring me one", library) == [
         ("Go", {"goal": "shelf"}), ("Find", {"theme": "cup"}), ("Bring", {"theme": "cup", "recipient": "me"})]
+
+
+@pytest.mark.parametrize(("text", "want"), [
+    ("the man sitting down in the hall could use a blanket", [("Bring", {"theme": "blanket", "recipient": "man"})]),
+    ("greet the girl standing up by the window", [("Greet", {"theme": "girl"})]),     # as "standing by the window"
+])
+def test_a_participle_and_its_particle_before_a_place_describe_the_person(
+        text: str, want: list[tuple[str, dict[str, str]]], library: Library) -> None:
+    """words42: "lying down in the living room" was a bare participle and a particle, and the thing wished for was
+    refused as lost."""
+    assert_reads(text, want, library)
+
+
+def test_tell_me_please_how_many_counts(library: Library) -> None:
+    """words42: "tell me please, how many ..." was a Tell of the question; the politeness sits inside Count's unit."""
+    assert frames("tell me please, how many plates are on the table?", library) == [
+        ("Count", {"theme": "plate", "ground": "table"})]

@@ -47,6 +47,11 @@ def _participle(s: State, i: int) -> Match | None:
         return None
     if where_said(s, i + 1):
         return s.emit(i, 1, Tag.VBG_P, gerund)  # "the person standing *next to* the door" (words39): not "next" an NP
+    words = s.words
+    if nxt in PARTICLES and nxt not in PREPOSITIONS and i + 3 < len(words) and \
+            words[i + 2].lower in PREPOSITIONS and s.np_starts(i + 3):
+        return s.emit(i, 2, Tag.VBG_P, gerund)  # "the person *lying down* in the living room": one participle
+        #                                         and its place (words42: "down" was a particle, the place lost)
     tag = Tag.VBG_T if s.np_starts(i + 1) and nxt not in PARTICLES and not _second_object(s, gerund) else \
         Tag.VBG_P if nxt in PREPOSITIONS and s.np_starts(i + 2) else Tag.VBG_I
     return s.emit(i, 1, tag, gerund)

@@ -897,8 +897,12 @@ def _told_how_many(s: State, i: int) -> Match | None:
     k = i + found[1]
     m = _phrase(s, k, _TOLD_PEOPLE)
     k += m
+    polite = 0
+    while k + polite < len(words) and words[k + polite].lower in ("please", ","):
+        polite += 1                               # "tell me *please,* how many ..." (words42: what was said)
+    k += polite
     if k + 1 >= len(words) or words[k].lower != "how" or words[k + 1].lower != "many" or \
-            found[0] == NUMBER_MEANS.split()[0] and m and words[k - m].lower != "to":
+            found[0] == NUMBER_MEANS.split()[0] and m and words[k - m - polite].lower != "to" and not polite:
         return None                               # "tell me how many": the unit itself, read as it is; "tell *to*
         #   me how many", as learners of English say it, is the unit's too (words39)
     end = words[k + 1].end
@@ -2158,6 +2162,7 @@ TOLD_HOW_MANY = Rule("said how many", _told_how_many, (
     Example("Report to me how many cups are in the sink.", "Report to me how many", Tag.VERB),
     Example("say how many people are in the hall", "say how many", Tag.VERB),
     Example("tell to me how many jars are in the shed", "tell to me how many", Tag.VERB),
+    Example("tell me please how many jars are in the shed", "tell me please how many", Tag.VERB),   # words42
 ), None, "a verb of saying and 'how many': tell me how many (Count)")
 HOW_MANY_SEEN = Rule("how many X can you see", _how_many_seen, (
     Example("How many dishes can you see on the dining table?", "can", ""),
