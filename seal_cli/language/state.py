@@ -1415,6 +1415,8 @@ class State:
         words = self.words
         j = i + n
         while j < len(words) and match_phrase(words, j, SEPARATOR_WORDS) and words[j].lower not in ("before",):
+            if j > i and words[j].lower in SUB_FIRST and (self._subordinate_at(j) or ("",))[0] == "then":
+                break               # ", and *while you're there*, greet Jo": the clause's own subordinate (words42)
             j += match_phrase(words, j, SEPARATOR_WORDS)
         later = match_phrase(words, j, SEQUENCE_ADVERBS) if j < len(words) else 0
         if later and self.verb_after(j + later + int(j + later < len(words) and words[j + later].lower == ",")):

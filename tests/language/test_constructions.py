@@ -4125,3 +4125,10 @@ def test_tell_me_please_how_many_counts(library: Library) -> None:
     """words42: "tell me please, how many ..." was a Tell of the question; the politeness sits inside Count's unit."""
     assert frames("tell me please, how many plates are on the table?", library) == [
         ("Count", {"theme": "plate", "ground": "table"})]
+
+
+def test_and_while_you_are_there_is_the_clauses_own_subordinate(library: Library) -> None:
+    """words42: "and while" was read as one joint, "you're there" as a statement, and the command refused."""
+    assert frames("walk to the porch, and while you're there, greet Noor", library) == [
+        ("Go", {"goal": "porch"}), ("Greet", {"theme": "Noor"})]
+    assert [f for f, _ in frames("find the man in the hat and ask them to follow you", library)] == ["Find", "Guide"]
