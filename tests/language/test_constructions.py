@@ -4132,3 +4132,9 @@ def test_and_while_you_are_there_is_the_clauses_own_subordinate(library: Library
     assert frames("walk to the porch, and while you're there, greet Noor", library) == [
         ("Go", {"goal": "porch"}), ("Greet", {"theme": "Noor"})]
     assert [f for f, _ in frames("find the man in the hat and ask them to follow you", library)] == ["Find", "Guide"]
+
+
+def test_the_comma_closing_a_relative_clause_before_the_thing_given_is_dropped(library: Library) -> None:
+    """words42: "give Adel, who's in the office, a plum" joined "the office, a plum" as a list, the recipient's."""
+    assert frames("hand Noor, who is on the porch, a towel", library) == [
+        ("Give", {"theme": "towel", "recipient": "Noor"})]

@@ -179,6 +179,7 @@ INSIDE: tuple[Rule, ...] = (
     requests.FRONTED_END,
     statements.REMARK_AFTER,
     clauses.COMMA_RELATIVE,
+    clauses.RELATIVE_CLOSED,
     clauses.VERB_AFTER_JOINT,
     requests.OBLIGED_AFTER_COMMA,
     open_words.AND_PARTICIPLE,

@@ -209,6 +209,26 @@ def _comma_relative(s: State, i: int) -> Match | None:
     return Match(1 + m.consumed, m.words, expect=AFTER_SEP) if m else None
 
 
+def _relative_closed(s: State, i: int) -> Match | None:
+    """"give Adel*, who's in the office,* a plum": the comma that closes a relative clause set off by commas after
+    the person, before the thing given, is no joint: it is dropped, and the thing is the second object, as in "give
+    Adel who's in the office a plum" (words42: the comma joined "the office" and "a plum" as one list, the
+    recipient's). Only in a clause whose verb gives to someone (not a verb of saying), with nothing but the relative
+    clause and its phrases after the person, and a noun phrase with a determiner next."""
+    if s.verb_index < 0:
+        return None
+    unit = str(s.out[s.verb_index].info)
+    if unit not in s.lexicon.recipients or unit in s.lexicon.speech or s.next_lower(i) not in NP_OPENERS:
+        return None
+    after = s.out[s.verb_index + 1:]
+    rel = next((k for k, w in enumerate(after) if w.tag == Tag.REL), -1)
+    if rel < 1 or after[rel - 1].tag not in (Tag.NAME, Tag.WORD) or \
+            "," not in s.text_of(after[rel - 1].end, after[rel].start) or \
+            any(w.tag not in (Tag.PREP, Tag.DET, Tag.POSS, Tag.WORD, Tag.NAME, Tag.NUM) for w in after[rel + 1:]):
+        return None
+    return Match(1)
+
+
 def _said_before_person(s: State) -> bool:
     """Whether a verb of speech has its message (or question) before the person ("answer *a question* for Morgan",
     "tell *the time* to Jo"): a comma's "who ..." after the person then describes them (words35), nothing more said."""
@@ -280,6 +300,10 @@ COMMA_RELATIVE = Rule("relative clause after a comma", _comma_relative, (
     Example("give the cup to the man, who is sitting on the sofa", "sitting", Tag.VBG_P),
     Example("tell the joke to Priya, who is in the den", "who is", Tag.REL),
 ), frozenset([","]), "', who is ...' after a name or a noun: a relative clause describing it, not a question")
+RELATIVE_CLOSED = Rule("a relative clause's closing comma", _relative_closed, (
+    Example("give Adel, who's in the office, a plum", ",", ""),
+), frozenset([","]), "', who is in X,' between the person given to and the thing: the closing comma, dropped",
+   after=frozenset([Tag.WORD, Tag.NAME, Tag.NUM]))
 SEPARATOR = Rule("separator", _separator, (
     Example("take the cup and put it on the table", "and", Tag.SEP),
     Example("put the cup and the plate on the table", "and", Tag.AND_NP),
