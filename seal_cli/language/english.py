@@ -157,6 +157,12 @@ POLITE = asked_negatively(frozenset(["please", "kindly", "could you", "can you",
                       for can in ("can", "could", "can manage to", "could manage to", "are able to")),
                     *(f"see {whether} you're able to" for whether in ("if", "whether")),
                     "try and", "try your best to", "do your best to",
+                    # words42: a request asked as whether it is too much, a task announced with "next" or "first"
+                    *(f"{be} {much} to ask you to" for be in ("would it be", "is it", "would that be")
+                      for much in ("too much", "asking too much")),
+                    *(f"{det} {task} is to" for det in ("your next", "the next", "your first", "the first")
+                      for task in ("task", "job", "mission", "step")),
+                    "go on and",
                     "simply",
                     "let's", "let 's", "be sure to", "make sure to", "remember to", "go and", "come and", "go", "come",
                     "would you be so kind as to", "would you be kind enough to", "be so kind as to",

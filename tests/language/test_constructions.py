@@ -4138,3 +4138,14 @@ def test_the_comma_closing_a_relative_clause_before_the_thing_given_is_dropped(l
     """words42: "give Adel, who's in the office, a plum" joined "the office, a plum" as a list, the recipient's."""
     assert frames("hand Noor, who is on the porch, a towel", library) == [
         ("Give", {"theme": "towel", "recipient": "Noor"})]
+
+
+@pytest.mark.parametrize(("text", "want"), [
+    ("would it be too much to ask you to open the gate?", [("Open", {"theme": "gate"})]),
+    ("your first task is to close the shed", [("Close", {"theme": "shed"})]),
+    ("come on, shut the door", [("Close", {"theme": "door"})]),
+])
+def test_requests_wrapped_as_a_favour_a_next_task_or_urged_on(
+        text: str, want: list[tuple[str, dict[str, str]]], library: Library) -> None:
+    """words42: each was refused ("would" an unknown verb, a statement, "go on"/"come on" no verb of the library)."""
+    assert_reads(text, want, library)

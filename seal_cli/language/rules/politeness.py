@@ -223,8 +223,9 @@ def _recipient_verb_after(s: State, k: int) -> bool:
     return False
 
 
-_ATTENTION = frozenset(["look", "listen"])
-"""Verbs said to catch the hearer's attention before what follows ("*Look,* the window is open. Close it.")."""
+_ATTENTION = frozenset(["look", "listen", "go on", "come on", "look here"])
+"""Verbs said to catch the hearer's attention before what follows ("*Look,* the window is open. Close it."), or to
+urge them on ("*Go on,* take the bowl to the sink": words42, it was refused as "go on", no verb of the library)."""
 
 
 def _attention(s: State, i: int) -> Match | None:
@@ -232,10 +233,11 @@ def _attention(s: State, i: int) -> Match | None:
     before a statement or a command asks for attention, no search and no looking (words33: "Look," was Find with
     nothing sought)."""
     words = s.words
-    if words[i].lower not in _ATTENTION or i + 2 >= len(words) or words[i + 1].lower != "," or \
-            not (s.statement_at(i + 2) or s.verb_after(i + 2)):
+    n = longest_phrase(words, i, _ATTENTION)
+    if not n or i + n + 1 >= len(words) or words[i + n].lower != "," or \
+            not (s.statement_at(i + n + 1) or s.verb_after(i + n + 1)):
         return None
-    return Match(2, (merge(words, i, 2, Tag.POLITE),))
+    return Match(n + 1, (merge(words, i, n + 1, Tag.POLITE),))
 
 
 def _emphatic_do(s: State, i: int) -> Match | None:
@@ -466,7 +468,8 @@ POLITENESS = Rule("politeness", _politeness, (
 ATTENTION = Rule("look, listen", _attention, (
     Example("Look, the window is open. Close it.", "Look,", Tag.POLITE),
     Example("listen, can you fetch the mail?", "listen,", Tag.POLITE),
-), _ATTENTION, "'Look, ...', 'listen, ...' before a statement or a command: attention asked, no frame")
+    Example("go on, take the bowl to the sink", "go on,", Tag.POLITE),                  # words42
+), first_words(_ATTENTION), "'Look, ...', 'listen, ...' before a statement or a command: attention asked, no frame")
 HELPING = Rule("help a person do", _helping, (
     Example("Help Jane find her keys", "Help Jane", Tag.POLITE),
     Example("help the guest to find a seat", "help the guest to", Tag.POLITE),
