@@ -4149,3 +4149,10 @@ def test_requests_wrapped_as_a_favour_a_next_task_or_urged_on(
         text: str, want: list[tuple[str, dict[str, str]]], library: Library) -> None:
     """words42: each was refused ("would" an unknown verb, a statement, "go on"/"come on" no verb of the library)."""
     assert_reads(text, want, library)
+
+
+def test_an_unknown_verb_after_go_and_before_a_preposition_is_reported(library: Library) -> None:
+    """words42: "go chat with the guard" was Go with the goal "chat with the guard": the verb vanished silently."""
+    with pytest.raises(CommandError, match="unknown verb 'chat'"):
+        parse_command("go chat with the guard and then come back", library)
+    assert frames("go round to the shed", library) == [("Go", {"goal": "shed"})]   # an adverb too: a path

@@ -446,6 +446,13 @@ def _unknown_unjoined(s: State, i: int) -> Match | None:
     of its own, so its unknown verb is reported, not read as a noun of the phrase (the verb was lost)."""
     words = s.words
     to = words[i].lower == "to"
+    if s.verb_index >= 0 and not to and i + 1 < len(words) and s.prev_tag() == Tag.VERB and \
+            words[i + 1].lower in PREPOSITIONS and _going_only(s, str(s.out[s.verb_index].info)):
+        low = words[i].lower            # "go *chat* with the person": a verb no frame lists, then its preposition
+        if verb_lemma(low) == low and s.verb_at(i) is None and low not in CLOSED and low not in s.lexicon.things and \
+                "verb" in parts_of_speech(low) and parts_of_speech(low) <= _VERB_OR_NOUN:
+            return Match(0, (Word("", words[i].start, words[i].start, Tag.SEP),), expect=True)   # words42: it was
+        return None                     # Go's goal ("chat with the person"), the verb lost silently
     if s.verb_index < 0 or not to and (i + 1 >= len(words) or words[i + 1].lower not in _NO_NOUN_AFTER and
                                        words[i + 1].lower not in _SPEAKER_OBJECTS and
                                        words[i + 1].lower not in NP_OPENERS):
@@ -578,6 +585,7 @@ UNKNOWN_UNJOINED = Rule("unknown verb without a joint", _unknown_unjoined, (
     Example("the person in the hall needs help, go see them", "see", Tag.WORD),
     Example("come help me", "help", Tag.WORD),
     Example("go feed the cat", "feed", Tag.WORD),
+    Example("go chat with the guard", "chat", Tag.WORD),                  # words42: a preposition after it
     Example("open the door let the cat out", "let", Tag.WORD),
     Example("come to the kitchen to help me", "to", Tag.SEP),
 ), _unknown_verb_first, "a verb no frame lists before its object, after a phrase: a clause of its own",
