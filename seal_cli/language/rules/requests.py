@@ -714,9 +714,9 @@ def _asked_whether(s: State, i: int) -> Match | None:
 
 
 def _whether_unjoined(s: State, i: int) -> Match | None:
-    """"go over to the table *see if* there are any fruits and bring me one": a question whether (:func:`_asked_whether`)
-    said right after a clause's phrase with no joint starts a clause of its own (words42: "see" was read as a noun
-    of the table, the question a condition, and nothing was sought)."""
+    """"go over to the table *see if* there are any fruits and bring me one": a question whether
+    (:func:`_asked_whether`) said right after a clause's phrase with no joint starts a clause of its own (words42:
+    "see" was read as a noun of the table, the question a condition, and nothing was sought)."""
     if s.verb_index < 0 or s.prev_tag() not in (Tag.WORD, Tag.NAME, Tag.PRON, Tag.LABEL):
         return None
     found = _asked_whether(s, i)

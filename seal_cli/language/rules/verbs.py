@@ -7,10 +7,10 @@ from seal_cli.language.english import (
     DEPARTURE_MEANS,
     END_MARKS,
     FOLLOW_ASKED,
-    PERSON_PRONOUNS,
     PARTICLES,
     PATH_ALONE,
     PATH_MEANS,
+    PERSON_PRONOUNS,
     PREPOSITIONS,
     TITLES,
 )
@@ -138,8 +138,8 @@ def _follow_asked_at(s: State, i: int) -> int:
             return 0                                              # "ask Anna to bring ...": something else asked
         if not low.isalpha() and "'" not in low or low in END_MARKS or s.verb_at(k) is not None and k == i:
             return 0
-        person = person or capitalised(words[k]) or low in PERSON_PRONOUNS or low == "them" or low in s.lexicon.people or \
-            noun_lemma(low) in s.lexicon.people
+        person = person or capitalised(words[k]) or low in PERSON_PRONOUNS or low == "them" or \
+            low in s.lexicon.people or noun_lemma(low) in s.lexicon.people
     return 0
 
 
