@@ -4156,3 +4156,16 @@ def test_an_unknown_verb_after_go_and_before_a_preposition_is_reported(library: 
     with pytest.raises(CommandError, match="unknown verb 'chat'"):
         parse_command("go chat with the guard and then come back", library)
     assert [f for f, _ in frames("go round to the shed", library)] == ["Go"]   # an adverb too: a path, as before
+
+
+@pytest.mark.parametrize(("text", "want"), [
+    ("on the counter there are some jars, tell me how many", [("Count", {"theme": "jar", "ground": "counter"})]),
+    ("the mugs are in the cupboard, tell me how many there are", [("Count", {"theme": "mug", "ground": "cupboard"})]),
+    ("in the shed there's a rake, bring it to me", [("Bring", {"theme": "rake", "recipient": "me", "source": "shed"})]),
+])
+def test_how_many_said_bare_counts_the_things_a_statement_named(
+        text: str, want: list[tuple[str, dict[str, str]]], library: Library) -> None:
+    """words42: "tell me how many" with nothing after it counted nothing, nowhere; it counts what the statement before
+    named, where it said they are, as "count them" does. A place said first in the existential ("*on the counter*
+    there are ...") is where they are."""
+    assert_reads(text, want, library)
