@@ -20,6 +20,7 @@ from seal_cli.language.morphology import (
     is_adverb,
     is_gradable,
     is_plural,
+    noun_lemma,
     parts_of_speech,
     verb_lemma,
 )
@@ -49,12 +50,19 @@ def _participle(s: State, i: int) -> Match | None:
         return s.emit(i, 1, Tag.VBG_P, gerund)  # "the person standing *next to* the door" (words39): not "next" an NP
     words = s.words
     if nxt in PARTICLES and nxt not in PREPOSITIONS and i + 3 < len(words) and \
-            words[i + 2].lower in PREPOSITIONS and s.np_starts(i + 3):
+            words[i + 2].lower in PREPOSITIONS and s.np_starts(i + 3) and _a_person(s, s.out[-1]):
         return s.emit(i, 2, Tag.VBG_P, gerund)  # "the person *lying down* in the living room": one participle
-        #                                         and its place (words42: "down" was a particle, the place lost)
+        #   and its place (words42: "down" was a particle, the place lost); of a person only ("the cup on the
+        #   microwave going back to the coffee maker", "a spoon standing up on it" are read as before)
     tag = Tag.VBG_T if s.np_starts(i + 1) and nxt not in PARTICLES and not _second_object(s, gerund) else \
         Tag.VBG_P if nxt in PREPOSITIONS and s.np_starts(i + 2) else Tag.VBG_I
     return s.emit(i, 1, tag, gerund)
+
+
+def _a_person(s: State, word: Word) -> bool:
+    """Whether a tagged word names a person: a name, or a noun of people (``Lexicon.people``)."""
+    low = word.lower
+    return word.tag == Tag.NAME or low in s.lexicon.people or noun_lemma(low) in s.lexicon.people
 
 
 def _second_object(s: State, gerund: str) -> bool:
