@@ -1730,7 +1730,8 @@ def test_a_particle_after_one_state_is_read_as_before(library: Library) -> None:
 
 
 @pytest.mark.parametrize(("text", "want"), [
-    ("on the sofa there's a blanket, bring it to me", [("Bring", {"theme": "blanket", "recipient": "me"})]),
+    ("on the sofa there's a blanket, bring it to me", [("Bring", {"theme": "blanket", "recipient": "me",
+                                                                  "source": "sofa"})]),   # words42: where it is
     ("in the hall there is a coat, hang it in the closet", [("Place", {"theme": "coat", "goal": "closet"})]),
 ])
 def test_a_place_said_before_there_is_belongs_to_the_statement(
@@ -2041,7 +2042,8 @@ def test_the_phrase_said_before_is_it_is_what_it_names(library: Library) -> None
 
 
 @pytest.mark.parametrize(("text", "want"), [
-    ("in the study there are two plates, bring them to the sink", [("Bring", {"theme": "plate", "goal": "sink"})]),
+    ("in the study there are two plates, bring them to the sink", [("Bring", {"theme": "plate", "goal": "sink",
+                                                                              "source": "study"})]),   # words42
     ("I need that you open the window", [("Open", {"theme": "window"})]),
     ("i want that you bring me the salt", [("Bring", {"theme": "salt", "recipient": "me"})]),
     ("where r my slippers", [("Find", {"theme": "slipper"})]),
