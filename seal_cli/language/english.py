@@ -151,6 +151,18 @@ POLITE = asked_negatively(frozenset(["please", "kindly", "could you", "can you",
                     "i'd like you to", "you should", "you must", "you need to", "you have to", "you will", *YOU_MUST,
                     "you can", "go ahead and", "robot", "hey", "ok", "okay", "now", "first", "firstly",
                     "just", "quickly", "quick", "carefully", "to", "try to", "attempt to", "then", "and", "also",
+                    # words42: a hedge on the robot's ability before the verb, anywhere a clause starts ("once you're
+                    # in the hall, *see if you can* find ...", "... and *try and* find ..."): the verb is the task
+                    *(f"{see} {whether} you {can}" for see in ("see", "check") for whether in ("if", "whether")
+                      for can in ("can", "could", "can manage to", "could manage to", "are able to")),
+                    *(f"see {whether} you're able to" for whether in ("if", "whether")),
+                    "try and", "try your best to", "do your best to",
+                    # words42: a request asked as whether it is too much, a task announced with "next" or "first"
+                    *(f"{be} {much} to ask you to" for be in ("would it be", "is it", "would that be")
+                      for much in ("too much", "asking too much")),
+                    *(f"{det} {task} is to" for det in ("your next", "the next", "your first", "the first")
+                      for task in ("task", "job", "mission", "step")),
+                    "go on and",
                     "simply",
                     "let's", "let 's", "be sure to", "make sure to", "remember to", "go and", "come and", "go", "come",
                     "would you be so kind as to", "would you be kind enough to", "be so kind as to",
@@ -374,7 +386,7 @@ FIRST_LATER = frozenset(["after", "when", "whenever", "once", "as soon as"])
 TIME_UNITS = frozenset(["second", "seconds", "minute", "minutes", "hour", "hours", "moment", "moments", "while",
                         "day", "days", "week", "weeks"])
 """Measures of time: "for *three minutes*", "every *few minutes*" say how long or how often."""
-TIME_ASKED = (frozenset(["when", "whenever", "if", "once"]), frozenset(["get", "have", "find", "got"]),
+TIME_ASKED = (frozenset(["when", "whenever", "if", "once"]), frozenset(["get", "have", "find", "got", "had", "found"]),
               frozenset(["a", "an", "the", "some", "any", "spare", "free", "quick", "little", "few"]),
               TIME_UNITS | frozenset(["chance", "opportunity", "sec", "secs", "min", "mins", "tick", "time"]))
 """The robot's time asked for in a clause of the robot's own: "*when you get a sec*", "*if you have a spare
@@ -495,6 +507,12 @@ WISHED_PLACED = frozenset([*(f"{who} {wish}" for who in ("i", "we") for wish in 
                            "i'd like", "we'd like",
                            *(f"{who} really {wish}" for who in ("i", "we") for wish in ("want", "need")),
                            *(f"{who}{would} really like" for who in ("i", "we") for would in ("'d", " would"))])
+FOLLOW_ASKED = ("guide", frozenset(["ask", "tell", "get", "invite"]),
+                frozenset([f"to {verb} {who}" for verb in ("follow", "come with", "go with", "walk with")
+                           for who in ("you", "me", "us")]))
+"""A person asked to follow the robot ("*ask* Anna *to follow you* to the kitchen", "tell the man in the hat to come
+with you"): the robot leads them, the unit ``FOLLOW_ASKED[0]`` (words42: it was a Tell of "follow you to the
+kitchen", nobody led). The verbs of asking, and what the person is asked."""
 WISHED_PLACES = frozenset(["on", "onto", "in", "into", "inside", "under"])
 PLACE_MEANS = "put"
 """"*I want* the mug *on* the shelf", "I'd like the books in the box": the speaker's wish for where a thing is,

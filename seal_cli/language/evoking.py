@@ -20,6 +20,7 @@ from seal_cli.language.english import (
     LOCATED,
     LOCATIVE,
     NP_OPENERS,
+    NUMBER_MEANS,
     ROUTE_NOUNS,
     SPEAKER_PRONOUNS,
     TIME_UNITS,
@@ -750,6 +751,26 @@ class Evoker:
             if end is not None:
                 elements["goal"] = self.stated_phrase(end)
 
+    def counted_as_stated(self, frame: Frame, unit: str, clause: Clause, elements: dict[str, Phrase]) -> None:
+        """"On the desk there are a few toys, *tell me how many*": counting said with nothing after "how many"
+        counts the things a statement before it named, where it said they are, as "count them" would (words42: it
+        counted nothing, nowhere). Only the unit of counting (``NUMBER_MEANS``) with its first element unsaid."""
+        if unit != NUMBER_MEANS or not frame.elements or frame.elements[0].role in elements:
+            return
+        first = frame.elements[0].role
+        said = self.reference.mentioned(NP(clause.start, clause.start, None, "pronoun", pronoun="them"), frame, first)
+        if said is None:
+            return
+        person = said.name or self.types.is_a(noun_lemma(said.head), "person") is True
+        start, end = self.reference.with_its_place(said)
+        elements[first] = Phrase("", said.head if said.name else noun_lemma(said.head),
+                                 None if person else self.mentioned_class(said), "person" if person else "thing",
+                                 stands_for=self.text[start:end])
+        role = next((r for r in ("ground",) if r in frame.roles and r not in elements), None)
+        place = self.reference.place_said(said) if role is not None else None
+        if role is not None and place is not None:
+            elements[role] = self.stated_phrase(place)
+
     def mentioned_class(self, said: Mention) -> str | None:
         """The class a thing a statement or condition named is, by all its words, as the phrase itself would be
         grounded ("if *the coffee machine* is on, turn it off": ``coffee_machine``, not the head's "machine");
@@ -833,6 +854,7 @@ class Evoker:
                 if prep is not None:             # "put the teapot *on* the sideboard": on its top, not in it
                     elements[element.role] = replace(elements[element.role], preposition=prep)
         self.place_said(frame, roles, elements)
+        self.counted_as_stated(frame, unit, clause, elements)
         self.place_said_first(frame, roles, attached, elements)
         self.led_where_already(clause, elements)
         first = frame.elements[0] if frame.elements else None

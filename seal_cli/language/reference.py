@@ -314,6 +314,9 @@ class Reference:
         if span is None or self._mentions is None:
             return None
         person = said.name or self.types.is_a(noun_lemma(said.head), "person") is True
+        fronted = self._place_fronted(said, span)
+        if fronted is not None:
+            return fronted                           # "*on the desk* there are a few toys" (words42)
         for m in self._mentions:
             if m.start < said.end or m.start == said.start:
                 continue
@@ -329,6 +332,26 @@ class Reference:
                     self.types.is_a(noun_lemma(m.head), "person") is not True:
                 return m
         return None
+
+    def _place_fronted(self, said: Mention, span: tuple[int, int]) -> Mention | None:
+        """The place said first in an existential statement, before "there is" and ``said`` ("*on the desk* there are
+        a few toys", "in the kitchen there's a cup"): the phrase the statement opens with, after a preposition of
+        where a thing is, when "there" and a form of "be" come between it and ``said``; None otherwise."""
+        assert self._mentions is not None
+        before = [m for m in self._mentions if span[0] <= m.start and m.end <= said.start]
+        if not before or not before[-1].oblique:
+            return None
+        m = before[-1]
+        words = self.text[m.start:m.end].split()
+        if len(words) > 2 and words[-1].lower() == "there":     # the phrase read on into "there": cut before it
+            end = m.start + self.text[m.start:m.end].rstrip().rfind(" ")
+            m = replace(m, end=end, head=words[-2])
+        opening = self.text[span[0]:m.start].lower().split()
+        between = self.text[m.end:said.start].lower().replace("'s", " 's").split()
+        if not opening or " ".join(opening) not in (*LOCATED, *BESIDE) or between[:1] != ["there"] or \
+                len(between) < 2 or between[1] not in ("is", "are", "'s", "was", "were"):
+            return None
+        return m
 
     def wanting_said(self, said: Mention) -> bool:
         """Whether a statement says that ``said`` wants something ("grace *wants* a drink", "rose *wanted* to go

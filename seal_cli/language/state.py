@@ -45,6 +45,7 @@ from seal_cli.language.english import (
     PARTICLES,
     PATH_PREPOSITIONS,
     PERCEIVING,
+    PLACE_MEANS,
     POLITE,
     POLITE_FORMULAE,
     POSSESSIVES,
@@ -196,8 +197,8 @@ _DASHES = frozenset(["-", "–", "—", "--"])
 def time_asked(words: Sequence[Word], i: int) -> int:
     """How many words "when you get a sec" (``english.TIME_ASKED``) takes at ``i`` (0: none)."""
     subordinators, verbs, quantity, measures = TIME_ASKED
-    if i + 3 >= len(words) or words[i].lower not in subordinators or words[i + 1].lower != "you" or \
-            words[i + 2].lower not in verbs:
+    if i + 3 >= len(words) or words[i].lower not in subordinators or words[i + 1].lower not in ("you", "you've") or \
+            words[i + 2].lower not in verbs:          # "when you've got a sec": the perfect of having
         return 0
     k = i + 3
     while k < len(words) and words[k].lower in quantity:
@@ -828,7 +829,7 @@ class State:
             end += 1
         if end >= len(words):
             if not said or stated and any(self.verb_at(k) is not None and words[k - 1].lower not in NP_OPENERS
-                                          for k in range(i + 1, end)):
+                                          and not self._state_in_progress(i, k) for k in range(i + 1, end)):
                 return None                              # a statement with a verb of the library in it: said
             return self._aside(i, end - i, (words[i].start, words[-1].end))
             # "pour it into the cup... *the blue one*": a fragment after; "follow Adel? *He is at the entrance*"
@@ -838,6 +839,20 @@ class State:
                 not any(self.verb_at(k) is not None or self.asks_at(k) for k in range(end + 1, len(words))):
             return None                                  # no sentence holds a command: the error says so
         return self._aside(i, end + 1 - i, (words[i].start, words[end].end))
+
+    def _state_in_progress(self, i: int, k: int) -> bool:
+        """Whether the verb at ``k``, in a statement starting at ``i``, says what someone other than the robot is
+        doing right now (words42): its "-ing" form right after a form of "be", and the subject not "you" ("take
+        Robin to the office. *she's waiting* at the entrance", "*Anna is waiting* in the hall": where she is, no
+        task). "you're waiting ..." may tell the robot, and a base form anywhere ("Anna is waiting for you to bring
+        her a cup") is a task: both stay said."""
+        words = self.words
+        low = words[k].lower
+        return k > i and low.endswith("ing") and (words[k - 1].lower in BE_WORDS or
+                                                     words[k - 1].lower.endswith(("'re", "'m", "'s"))) and \
+            not any(w.lower.startswith("you") for w in words[i:k]) and \
+            not any(self.verb_at(j) is not None and verb_lemma(words[j].lower) == words[j].lower
+                    for j in range(k + 1, len(words)) if words[j].lower not in END_MARKS)
 
     def dislocated(self, i: int) -> Match | None:
         """A noun phrase said first, then a comma and a command that takes it up by a pronoun ("*The sponge
@@ -1202,7 +1217,8 @@ class State:
             if not finite:
                 finite = lemma is not None and low not in NP_OPENERS and k > j and \
                     words[k - 1].lower not in NP_OPENERS and words[k - 1].lower not in MODALS and \
-                    words[k - 1].lower != "to" or low in BE_WORDS
+                    words[k - 1].lower != "to" or low in BE_WORDS or \
+                    "'" in low[1:] and "'" + low.split("'", 1)[1] in CONTRACTED     # "if *you're* in the hall"
                 continue            # "before *the guests* arrive", "when *guests* arrive": the subject (words30)
             before = words[k - 1].lower
             if before in NP_OPENERS or before in MODALS or before in BE_WORDS or \
@@ -1400,6 +1416,8 @@ class State:
         words = self.words
         j = i + n
         while j < len(words) and match_phrase(words, j, SEPARATOR_WORDS) and words[j].lower not in ("before",):
+            if j > i and words[j].lower in SUB_FIRST and (self._subordinate_at(j) or ("",))[0] == "then":
+                break               # ", and *while you're there*, greet Jo": the clause's own subordinate (words42)
             j += match_phrase(words, j, SEPARATOR_WORDS)
         later = match_phrase(words, j, SEQUENCE_ADVERBS) if j < len(words) else 0
         if later and self.verb_after(j + later + int(j + later < len(words) and words[j + later].lower == ",")):
@@ -1453,7 +1471,7 @@ class State:
             return Match(j - i, (merge(words, i, j - i, Tag.SEP),))
         if low == "," and span == 1 and self._between_adjectives(i, j):
             return Match(1)                # "a round, gold object": one noun phrase, its head "object"
-        if low in ("and", ",", ";") and self._obliged_at(j):
+        if low in ("and", ",", ";") and self._obliged_at(j) and not self.things_listed():
             return Match(j - i, (merge(words, i, j - i, Tag.SEP),), expect=True)   # "..., the cups go on the shelf"
         if low == "," and j == i + 2 and words[i + 1].lower == "and" and self.prev_tag() in ("WORD", "NAME") and \
                 self.person_at(j) and match_phrase(words, j + 1, ADDITIVES):
@@ -1483,6 +1501,16 @@ class State:
         if low in ("and", "then", ",", ";", "or"):
             return Match(j - i, (merge(words, i, j - i, Tag.SEP),))
         return None
+
+    def things_listed(self) -> bool:
+        """Whether the clause so far is only the things of "the plate and the bowl belong on the shelf": its verb
+        the unsaid "put" of a thing said to belong somewhere, and no more than noun phrases after it (words42: the
+        "and" joins the things, the obligation is the list's)."""
+        if self.verb_index < 0:
+            return False
+        verb = self.out[self.verb_index]
+        return not verb.text and verb.info == PLACE_MEANS and \
+            all(w.tag in (Tag.DET, Tag.WORD, Tag.POSS, Tag.NUM, Tag.AND_NP) for w in self.out[self.verb_index + 1:])
 
     def _obliged_at(self, j: int) -> bool:
         """Whether a noun phrase and what it should do ("the cups *go* on the shelf", ``english.OBLIGED``) start at
@@ -1716,11 +1744,21 @@ class State:
         "meeting room *three*", "table *9*"): one number (digits, or a number word other than "one"),
         with no noun after it to count ("give the kids *two* apples" counts)."""
         low = self.words[i].lower
+        if low == "one" and self._one_labels(i):
+            return True
         if not (low.isascii() and low.isdigit() or low in NUMBERS and low not in VAGUE_NUMBERS):
             return False
         if i + 1 < len(self.words) and self.words[i + 1].lower in TIME_UNITS:
             return False                                        # "wait ten minutes"
         return i + 1 >= len(self.words) or not self.noun_follows(i + 1) or self.words[i + 1].lower in NUMBERS
+
+    def _one_labels(self, i: int) -> bool:
+        """Whether the "one" at ``i`` names a numbered place with the bare singular noun before it, right after a
+        preposition, ending the phrase ("go to *table one*", "put it in box one": words42; it was the pronoun of
+        "the red one", with no element to take it). Only there: "give the kids one", "bring Anna one" count."""
+        out = self.out
+        return len(out) >= 2 and out[-1].tag == Tag.WORD and out[-2].tag == Tag.PREP and \
+            not is_plural(out[-1].lower) and not self.noun_follows(i + 1)
 
     def noun_follows(self, i: int) -> bool:
         """Whether an open-class word (a noun or adjective) starts at ``i``."""

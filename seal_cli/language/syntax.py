@@ -187,7 +187,8 @@ class Syntax(Transformer[Token, Command]):
         while nxt < len(self.words) and self.words[nxt].info == "time":
             nxt += 1                          # "... there too", "... there right away"
         there = word.lower == "there" and (nxt == len(self.words) or self.words[nxt].tag in ("SEP", "END"))
-        prep = "toward" if word.lower in DIRECTIONS or word.info == "toward" else "at"  # "carry the box *upstairs*"
+        prep = "toward" if word.lower in DIRECTIONS or word.info == "toward" else \
+            "from" if word.info == "from" else "at"       # "carry the box *upstairs*"; "get a cup *from there*"
         return PP(prep, NP(word.start, word.end, word, "place", there=there), word.start)
 
     # -- the command and its clauses -----------------------------------------------------------

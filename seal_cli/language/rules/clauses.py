@@ -209,6 +209,26 @@ def _comma_relative(s: State, i: int) -> Match | None:
     return Match(1 + m.consumed, m.words, expect=AFTER_SEP) if m else None
 
 
+def _relative_closed(s: State, i: int) -> Match | None:
+    """"give Adel*, who's in the office,* a plum": the comma that closes a relative clause set off by commas after
+    the person, before the thing given, is no joint: it is dropped, and the thing is the second object, as in "give
+    Adel who's in the office a plum" (words42: the comma joined "the office" and "a plum" as one list, the
+    recipient's). Only in a clause whose verb gives to someone (not a verb of saying), with nothing but the relative
+    clause and its phrases after the person, and a noun phrase with a determiner next."""
+    if s.verb_index < 0:
+        return None
+    unit = str(s.out[s.verb_index].info)
+    if unit not in s.lexicon.recipients or unit in s.lexicon.speech or s.next_lower(i) not in NP_OPENERS:
+        return None
+    after = s.out[s.verb_index + 1:]
+    rel = next((k for k, w in enumerate(after) if w.tag == Tag.REL), -1)
+    if rel < 1 or after[rel - 1].tag not in (Tag.NAME, Tag.WORD) or \
+            "," not in s.text_of(after[rel - 1].end, after[rel].start) or \
+            any(w.tag not in (Tag.PREP, Tag.DET, Tag.POSS, Tag.WORD, Tag.NAME, Tag.NUM) for w in after[rel + 1:]):
+        return None
+    return Match(1)
+
+
 def _said_before_person(s: State) -> bool:
     """Whether a verb of speech has its message (or question) before the person ("answer *a question* for Morgan",
     "tell *the time* to Jo"): a comma's "who ..." after the person then describes them (words35), nothing more said."""
@@ -280,13 +300,41 @@ COMMA_RELATIVE = Rule("relative clause after a comma", _comma_relative, (
     Example("give the cup to the man, who is sitting on the sofa", "sitting", Tag.VBG_P),
     Example("tell the joke to Priya, who is in the den", "who is", Tag.REL),
 ), frozenset([","]), "', who is ...' after a name or a noun: a relative clause describing it, not a question")
+RELATIVE_CLOSED = Rule("a relative clause's closing comma", _relative_closed, (
+    Example("give Adel, who's in the office, a plum", ",", ""),
+), frozenset([","]), "', who is in X,' between the person given to and the thing: the closing comma, dropped",
+   after=frozenset([Tag.WORD, Tag.NAME, Tag.NUM]))
 SEPARATOR = Rule("separator", _separator, (
     Example("take the cup and put it on the table", "and", Tag.SEP),
     Example("put the cup and the plate on the table", "and", Tag.AND_NP),
 ), SEP_FIRST, "'and', ',', 'then', ... joining clauses or noun phrases")
 
 
-_OBJECT_STARTS = frozenset(["it", "them", "him", "her", "me", "us"])
+_OBJECT_STARTS = frozenset(["it", "them", "him", "her", "me", "us", "everyone", "everybody", "someone", "somebody",
+                            "anyone", "anybody", "everything", "something"])
+"""Pronouns that open the object of a verb said without a joint ("... in the hall *greet everyone* there": words42
+added the indefinite ones)."""
+
+
+_FREE_PLACES = frozenset(["wherever", "anywhere", "everywhere"])
+"""Words that open a free relative of place ("follow him *wherever* he goes")."""
+_FREE_SUBJECTS = frozenset(["he", "she", "they", "it", "i", "we"])
+
+
+def _wherever(s: State, i: int) -> Match | None:
+    """"follow him *wherever he goes*", "follow Jo everywhere she walks": a free relative of place, a subject and its
+    verb, after a clause with its object says where the robot follows, which the frame says already: a remark
+    (words42: "he" was a pronoun no element took). Only up to the clause's end, with no verb of the library's base
+    form in it after the subject's own ("wherever he goes, bring a cup" keeps its command)."""
+    words = s.words
+    if s.verb_index < 0 or s.prev_tag() not in (Tag.WORD, Tag.NAME, Tag.PRON) or i + 2 >= len(words) or \
+            words[i + 1].lower not in _FREE_SUBJECTS:
+        return None
+    end = s.cond_end(i + 1)
+    if end < i + 3 or any(s.verb_at(k) is not None and verb_lemma(words[k].lower) == words[k].lower
+                          for k in range(i + 3, end)):
+        return None
+    return Match(end - i, remarks=((words[i].start, words[end - 1].end),))
 
 
 def _unjoined(s: State, i: int) -> Match | None:
@@ -398,6 +446,13 @@ def _unknown_unjoined(s: State, i: int) -> Match | None:
     of its own, so its unknown verb is reported, not read as a noun of the phrase (the verb was lost)."""
     words = s.words
     to = words[i].lower == "to"
+    if s.verb_index >= 0 and not to and i + 1 < len(words) and s.prev_tag() == Tag.VERB and \
+            words[i + 1].lower in PREPOSITIONS and _going_only(s, str(s.out[s.verb_index].info)):
+        low = words[i].lower            # "go *chat* with the person": a verb no frame lists, then its preposition
+        if verb_lemma(low) == low and s.verb_at(i) is None and low not in CLOSED and low not in s.lexicon.things and \
+                "verb" in parts_of_speech(low) and parts_of_speech(low) <= _VERB_OR_NOUN:
+            return Match(0, (Word("", words[i].start, words[i].start, Tag.SEP),), expect=True)   # words42: it was
+        return None                     # Go's goal ("chat with the person"), the verb lost silently
     if s.verb_index < 0 or not to and (i + 1 >= len(words) or words[i + 1].lower not in _NO_NOUN_AFTER and
                                        words[i + 1].lower not in _SPEAKER_OBJECTS and
                                        words[i + 1].lower not in NP_OPENERS):
@@ -494,6 +549,11 @@ VERB_AFTER_JOINT = Rule("verb after a joint", _verb_after_joint, (
     Example("head back to the kitchen and tidy up", "tidy", Tag.WORD),
 ), frozenset(VERB_JOINTS), "a bare word mostly used as a verb after 'and', 'then' or ',', before what a verb takes: "
    "a clause of its own, not a noun of a list", after=frozenset([Tag.WORD, Tag.NAME, Tag.PRON, Tag.HERE, Tag.PARTICLE]))
+WHEREVER = Rule("wherever they go", _wherever, (
+    Example("follow him wherever he goes", "wherever", ""),
+    Example("stay with Jo everywhere she walks", "everywhere", ""),
+), _FREE_PLACES, "'wherever he goes' after a clause: a free relative of place, a remark",
+   after=frozenset([Tag.WORD, Tag.NAME, Tag.PRON]))
 UNJOINED = Rule("clause without a joint", _unjoined, (
     Example("meet Jo at the counter escort her back", "escort", Tag.VERB),
     Example("pick up the cup bring it to me", "bring", Tag.VERB),
@@ -525,6 +585,7 @@ UNKNOWN_UNJOINED = Rule("unknown verb without a joint", _unknown_unjoined, (
     Example("the person in the hall needs help, go see them", "see", Tag.WORD),
     Example("come help me", "help", Tag.WORD),
     Example("go feed the cat", "feed", Tag.WORD),
+    Example("go chat with the guard", "chat", Tag.WORD),                  # words42: a preposition after it
     Example("open the door let the cat out", "let", Tag.WORD),
     Example("come to the kitchen to help me", "to", Tag.SEP),
 ), _unknown_verb_first, "a verb no frame lists before its object, after a phrase: a clause of its own",

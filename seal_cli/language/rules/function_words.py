@@ -32,7 +32,7 @@ from seal_cli.language.english import (
 from seal_cli.language.morphology import noun_lemma, parts_of_speech, verb_lemma
 from seal_cli.language.premises import is_premises
 from seal_cli.language.rule import Example, Match, Rule
-from seal_cli.language.state import CLOSED, IN_NP, TIME_FIRST, State, first_words, match_phrase
+from seal_cli.language.state import CLOSED, IN_NP, TIME_FIRST, State, first_words, match_phrase, merge
 from seal_cli.language.tags import Tag
 from seal_cli.language.tokens import Word
 
@@ -251,6 +251,20 @@ def _place_word_after_from(s: State, i: int) -> Match | None:
 
 
 _PLACE_WORDS = frozenset(w for w in HERE_WORDS if " " not in w and w not in ("here", "there"))
+
+
+def _from_there(s: State, i: int) -> Match | None:
+    """"go to the pantry and get a bowl *from there*", "take the cup from here": "from" and a bare "here"/"there"
+    ending the clause is where the motion starts, a place pointed at or said before (words42: the grammar refused
+    "there" after a preposition). One word, a place (``HERE``) whose preposition is "from": the source."""
+    words = s.words
+    if s.in_np() or words[i].lower not in _WHENCE or i + 1 >= len(words) or words[i + 1].lower not in ("here", "there"):
+        return None
+    nxt = s.next_lower(i + 1)
+    if nxt and nxt not in END_MARKS and nxt not in (",", ";", "and", "then", "please", "to", "into", "onto", "too"):
+        return None
+    w = merge(words, i, 2, Tag.HERE, words[i].lower)
+    return Match(2, (Word(w.text, w.start, w.end, w.tag, w.info, words[i + 1].lower),))
 
 
 def _particle_before_object(s: State, i: int) -> Match | None:
@@ -557,6 +571,10 @@ PLACE_WORD_AFTER_FROM = Rule("a place word after from", _place_word_after_from, 
     Example("fetch my slippers from upstairs", "upstairs", Tag.WORD),
     Example("bring the laundry from downstairs", "downstairs", Tag.WORD),
 ), _PLACE_WORDS, "'from upstairs': the place word names where the motion starts, as a noun")
+FROM_THERE = Rule("from there", _from_there, (
+    Example("go to the shed and get a rake from there", "from there", Tag.HERE),
+    Example("take the mug from here to the sink", "from here", Tag.HERE),
+), _WHENCE, "'from there', 'from here': where the motion starts, a place pointed at or said before")
 HERE = Rule("here and there", _here, (
     Example("bring it here", "here", Tag.HERE),
     Example("how many cups are there on the table", "there", Tag.THERE),

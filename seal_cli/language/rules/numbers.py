@@ -209,6 +209,7 @@ PAST_TWELVE = Rule("number word past twelve", _past_twelve, (
 LABEL = Rule("number naming a thing", _label, (
     Example("go to room 214", "214", Tag.LABEL),
     Example("clean meeting room three", "three", Tag.LABEL),
+    Example("carry the tray to table one", "one", Tag.LABEL),         # words42: a bare noun after a preposition
 ), _digits_or_number, "a number after a noun names a numbered thing, unless a noun follows it",
    after=frozenset([Tag.WORD, Tag.NAME]))
 NUMBER_AS_NOUN = Rule("number as a noun", _number_as_noun, (

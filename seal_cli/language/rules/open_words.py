@@ -20,6 +20,7 @@ from seal_cli.language.morphology import (
     is_adverb,
     is_gradable,
     is_plural,
+    noun_lemma,
     parts_of_speech,
     verb_lemma,
 )
@@ -47,9 +48,21 @@ def _participle(s: State, i: int) -> Match | None:
         return None
     if where_said(s, i + 1):
         return s.emit(i, 1, Tag.VBG_P, gerund)  # "the person standing *next to* the door" (words39): not "next" an NP
+    words = s.words
+    if nxt in PARTICLES and nxt not in PREPOSITIONS and i + 3 < len(words) and \
+            words[i + 2].lower in PREPOSITIONS and s.np_starts(i + 3) and _a_person(s, s.out[-1]):
+        return s.emit(i, 2, Tag.VBG_P, gerund)  # "the person *lying down* in the living room": one participle
+        #   and its place (words42: "down" was a particle, the place lost); of a person only ("the cup on the
+        #   microwave going back to the coffee maker", "a spoon standing up on it" are read as before)
     tag = Tag.VBG_T if s.np_starts(i + 1) and nxt not in PARTICLES and not _second_object(s, gerund) else \
         Tag.VBG_P if nxt in PREPOSITIONS and s.np_starts(i + 2) else Tag.VBG_I
     return s.emit(i, 1, tag, gerund)
+
+
+def _a_person(s: State, word: Word) -> bool:
+    """Whether a tagged word names a person: a name, or a noun of people (``Lexicon.people``)."""
+    low = word.lower
+    return word.tag == Tag.NAME or low in s.lexicon.people or noun_lemma(low) in s.lexicon.people
 
 
 def _second_object(s: State, gerund: str) -> bool:
@@ -199,6 +212,11 @@ def _title_in_lower_case(s: State, i: int) -> Match | None:
     return Match(2, (Word(s.text_of(w.start, words[i + 1].end), w.start, words[i + 1].end, Tag.NAME),))
 
 
+_NO_PLURAL_ENDINGS = ("is", "us", "ss")
+"""Endings of a word no dictionary lists that make no English plural (words42): "paris", "chris", "marcus", "ross" end
+in "s" and are no more than one, as "cheezits" and "oreos" are."""
+
+
 def _lower_case_name(s: State, i: int) -> Match | None:
     """A word neither an English dictionary nor the library's taxonomy lists, alone after "to" or "for" in a
     clause whose verb may have a recipient ("deliver the knife to *jamie*", "fetch a towel for *jo*"), or
@@ -210,7 +228,8 @@ def _lower_case_name(s: State, i: int) -> Match | None:
     a verb only frames of people have too: "meet *morgan* at the door", a horse; not "home",
     an adverb too, nor a thing the taxonomy knows: "bring it to bed"; "with" right after the verb: "put the plate
     with *apple* in the fridge" says what the plate holds), or right after a verb whose
-    frame's first element is a person ("take *jordan* to the bedroom", unless it ends in "s" as plurals do:
+    frame's first element is a person ("take *jordan* to the bedroom", unless it ends in "s" as plurals do, not in
+    "is", "us", "ss" ("take *paris* to the desk"), which none does:
     "take cheezits to the kitchen" stays a thing): a name written in lower case. A word the map or the
     vocabulary names as a person is a name wherever it is (the parser writes it capitalised for the
     tagger)."""
@@ -222,7 +241,7 @@ def _lower_case_name(s: State, i: int) -> Match | None:
             (str(s.out[-1].info) in s.lexicon.escorts or told)):
         return None                      # "take *jordan* to the bedroom": right after a verb whose object is a person
     verb = str(s.out[s.verb_index].info)
-    if s.prev_tag() == Tag.VERB and low.endswith("s"):
+    if s.prev_tag() == Tag.VERB and low.endswith("s") and not low.endswith(_NO_PLURAL_ENDINGS):
         return None
     near = s.prev_tag() == Tag.PREP and s.out[-1].info == "near" and f"{verb} with" in s.lexicon.escorts
     if s.prev_tag() == Tag.PREP and not (s.out[-1].info in ("to", "for") and verb in s.lexicon.recipients or
@@ -304,6 +323,7 @@ LOWER_CASE_NAME = Rule("name in lower case", _lower_case_name, (
     Example("fetch a towel for jo", "jo", Tag.NAME),
     Example("go with sam to the bedroom", "sam", Tag.NAME),
     Example("take jordan to the bedroom", "jordan", Tag.NAME),
+    Example("take doris from the porch to the car", "doris", Tag.NAME),          # words42: no plural's ending
     Example("stay close to morgan", "morgan", Tag.NAME),
     Example("deliver the cup to robin in the kitchen", "robin", Tag.NAME),
     Example("go with angel to the kitchen", "angel", Tag.NAME),

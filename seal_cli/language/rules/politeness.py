@@ -223,8 +223,9 @@ def _recipient_verb_after(s: State, k: int) -> bool:
     return False
 
 
-_ATTENTION = frozenset(["look", "listen"])
-"""Verbs said to catch the hearer's attention before what follows ("*Look,* the window is open. Close it.")."""
+_ATTENTION = frozenset(["look", "listen", "go on", "come on", "look here"])
+"""Verbs said to catch the hearer's attention before what follows ("*Look,* the window is open. Close it."), or to
+urge them on ("*Go on,* take the bowl to the sink": words42, it was refused as "go on", no verb of the library)."""
 
 
 def _attention(s: State, i: int) -> Match | None:
@@ -232,10 +233,11 @@ def _attention(s: State, i: int) -> Match | None:
     before a statement or a command asks for attention, no search and no looking (words33: "Look," was Find with
     nothing sought)."""
     words = s.words
-    if words[i].lower not in _ATTENTION or i + 2 >= len(words) or words[i + 1].lower != "," or \
-            not (s.statement_at(i + 2) or s.verb_after(i + 2)):
+    n = longest_phrase(words, i, _ATTENTION)
+    if not n or i + n + 1 >= len(words) or words[i + n].lower != "," or \
+            not (s.statement_at(i + n + 1) or s.verb_after(i + n + 1)):
         return None
-    return Match(2, (merge(words, i, 2, Tag.POLITE),))
+    return Match(n + 1, (merge(words, i, n + 1, Tag.POLITE),))
 
 
 def _emphatic_do(s: State, i: int) -> Match | None:
@@ -440,6 +442,7 @@ ASKED_AGAIN_RULE = Rule("the question asked again", _asked_again, (
 FORMULA = Rule("politeness formula", _formula, (
     Example("When you get a chance, could you close the window?", "When you get a chance,", Tag.POLITE),
     Example("Hey, when you get a sec, could you grab me a soda?", "when you get a sec,", Tag.POLITE),
+    Example("once you've got a minute, fold the towels", "once you've got a minute,", Tag.POLITE),   # words42
     Example("bring it to me when you can", "when", ""),
 ), FORMULA_FIRST, "politeness said as a clause of its own: before the command, politeness; after it, dropped")
 WHILE_HOLDING = Rule("while or after first", _while_holding, (
@@ -453,6 +456,8 @@ _POLITE_FIRST = first_words(POLITE)
 """Where politeness can start (its rule's gate)."""
 POLITENESS = Rule("politeness", _politeness, (
     Example("could you please bring me a cup", "could you please", Tag.POLITE),
+    Example("once you're upstairs, see if you can find my glasses", "see if you can", Tag.POLITE),      # words42
+    Example("go to the garage and try and find the pump", "try and", Tag.POLITE),
     Example("robot, go to the kitchen", "robot,", Tag.POLITE),
     Example("how about closing the window", "how about", Tag.POLITE),
     Example("do you mind switching the fan on", "do you mind", Tag.POLITE),
@@ -463,7 +468,8 @@ POLITENESS = Rule("politeness", _politeness, (
 ATTENTION = Rule("look, listen", _attention, (
     Example("Look, the window is open. Close it.", "Look,", Tag.POLITE),
     Example("listen, can you fetch the mail?", "listen,", Tag.POLITE),
-), _ATTENTION, "'Look, ...', 'listen, ...' before a statement or a command: attention asked, no frame")
+    Example("go on, take the bowl to the sink", "go on,", Tag.POLITE),                  # words42
+), first_words(_ATTENTION), "'Look, ...', 'listen, ...' before a statement or a command: attention asked, no frame")
 HELPING = Rule("help a person do", _helping, (
     Example("Help Jane find her keys", "Help Jane", Tag.POLITE),
     Example("help the guest to find a seat", "help the guest to", Tag.POLITE),

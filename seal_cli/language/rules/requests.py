@@ -738,6 +738,19 @@ def _asked_whether(s: State, i: int) -> Match | None:
     return _check_whether(s, i, _ASKERS)
 
 
+def _whether_unjoined(s: State, i: int) -> Match | None:
+    """"go over to the table *see if* there are any fruits and bring me one": a question whether
+    (:func:`_asked_whether`) said right after a clause's phrase with no joint starts a clause of its own (words42:
+    "see" was read as a noun of the table, the question a condition, and nothing was sought)."""
+    if s.verb_index < 0 or s.prev_tag() not in (Tag.WORD, Tag.NAME, Tag.PRON, Tag.LABEL):
+        return None
+    found = _asked_whether(s, i)
+    if found is None or not found.consumed or not found.words or found.words[0].tag != Tag.VERB:
+        return None
+    w = s.words[i]
+    return found._replace(words=(Word("", w.start, w.start, Tag.SEP), *found.words))
+
+
 def _state_asked(s: State, i: int) -> Match | None:
     """The state a yes/no question asks ("open" of "is the fridge open?", "is closed" of "check if the door is
     closed"): one ``COND`` word of info ``ASKED``, the "is" dropped."""
@@ -909,8 +922,12 @@ def _told_how_many(s: State, i: int) -> Match | None:
     k = i + found[1]
     m = _phrase(s, k, _TOLD_PEOPLE)
     k += m
+    polite = 0
+    while k + polite < len(words) and words[k + polite].lower in ("please", ","):
+        polite += 1                               # "tell me *please,* how many ..." (words42: what was said)
+    k += polite
     if k + 1 >= len(words) or words[k].lower != "how" or words[k + 1].lower != "many" or \
-            found[0] == NUMBER_MEANS.split()[0] and m and words[k - m].lower != "to":
+            found[0] == NUMBER_MEANS.split()[0] and m and words[k - m - polite].lower != "to" and not polite:
         return None                               # "tell me how many": the unit itself, read as it is; "tell *to*
         #   me how many", as learners of English say it, is the unit's too (words39)
     end = words[k + 1].end
@@ -1315,8 +1332,11 @@ _SUPPOSED = frozenset(["should be", "must be", "ought to be"])
 putting; of a state they ask it ("the door should be closed")."""
 _NEEDS = frozenset(["needs", "need", "wants", "want"])
 """Obligations said with a verb's -ing form after them ("the cup *needs* washing", "the shirt wants ironing")."""
-_OBLIGED_WORDS = 8
-"""The most words the thing's noun phrase may have before what it should do."""
+_OBLIGED_WORDS = 14
+"""The most words the thing's noun phrase may have before what it should do ("the knife, the fork and the spoon all":
+words42 let its things be listed)."""
+_FLOATING = frozenset(["all", "both", "each"])
+"""A quantifier said after the things, before what they should do ("the cups *all* go in the cupboard")."""
 
 
 def _obliged_phrase(s: State, i: int) -> tuple[int, int] | None:
@@ -1331,8 +1351,13 @@ def _obliged_phrase(s: State, i: int) -> tuple[int, int] | None:
         if n:
             before = words[k - 1].lower
             alone = k - 1 == i and first in _OBLIGED_SUBJECTS             # "*this* needs to go in the bin"
+            if before in _FLOATING and k - 2 > i and words[k - 2].lower not in NP_OPENERS:
+                return k - 1, n + 1                 # "the cups *all go* in the cupboard": the quantifier dropped too
             return (k, n) if alone or before not in NP_OPENERS else None
         low = words[k].lower
+        if low in (",", "and") and k + 1 < len(words) and words[k + 1].lower in NP_OPENERS and \
+                words[k - 1].lower.isalpha() and words[k - 1].lower not in NP_OPENERS:
+            continue                              # "the knife, the fork and the spoon go ...": things listed (words42)
         if not low.isalpha() or low in BE_WORDS or low in QUESTION_WORDS or low in s.lexicon.people or \
                 noun_lemma(low) in s.lexicon.people or \
                 s.verb_at(k) is not None and words[k - 1].lower not in DETERMINERS:
@@ -1353,7 +1378,7 @@ def _obliged_unit(s: State, k: int, n: int) -> tuple[str, int | None] | None:
         return None
     prep = PREPOSITIONS.get(words[m].lower)
     to_place = prep in WISHED_PLACES or prep == "to" and m + 1 < end and not capitalised(words[m + 1])
-    if " ".join(w.lower for w in words[k:m]) in _SUPPOSED:
+    if " ".join(w.lower for w in words[k + (words[k].lower in _FLOATING):m]) in _SUPPOSED:
         to_place = False                          # "it should be in the dining room": where to look, no command
     if to_place and m + 1 < end and s.np_starts(m + 1) and words[m + 1].lower not in PRONOUNS and \
             noun_lemma(words[end - 1].lower) not in s.lexicon.people and \
@@ -1399,8 +1424,8 @@ def _obliged_after_comma(s: State, i: int) -> Match | None:
     """"put the dirty cups in the dishwasher*,* the clean ones go in the cupboard": a comma before a thing said to
     belong somewhere (:func:`_obliged`) joins a clause of its own, not a noun of a list ("the dishwasher, the clean
     ones" was a list, and "go" a Go of the cupboard, the cups' place lost; words30)."""
-    if s.expect_verb or i + 1 >= len(s.words) or _obliged(s, i + 1) is None:
-        return None
+    if s.expect_verb or i + 1 >= len(s.words) or s.things_listed() or _obliged(s, i + 1) is None:
+        return None                               # "the knife, the fork ... go in ...": things listed (words42)
     return Match(1, (s.words[i].tagged(Tag.SEP),), expect=True)
 
 
@@ -2053,6 +2078,8 @@ OBLIGED_RULE = Rule("where a thing should go", _obliged, (
     Example("the bowl should go in the dishwasher", "", Tag.VERB),
     Example("The milk belongs in the fridge.", "The", Tag.DET),
     Example("the strawberry jello needs to go to the pantry", "", Tag.VERB),
+    Example("the saucers all go in the cupboard", "", Tag.VERB),                   # words42
+    Example("the jug, the mugs and the teapot belong on the tray", "", Tag.VERB),  # words42
     Example("the front door should be closed", "closed", Tag.PARTICLE),
     Example("the cup on the coffee table needs washing", "washing", Tag.PARTICLE),
 ), lambda low: low in NP_OPENERS or low in _OBLIGED_SUBJECTS,
@@ -2072,7 +2099,8 @@ AGENT_DROPPED = Rule("'by you' after a command said in the passive", _agent_drop
 ), frozenset(["by"]), "'by you' ending a clause said in the passive: the robot does it, no place")
 OBLIGED_DROPPED = Rule("the obligation after the thing", _obliged_dropped, (
     Example("the bowl should go in the dishwasher", "should go", ""),
-), first_words(OBLIGED), "the 'should go' of 'the bowl should go in Y', dropped: 'put' was unsaid before")
+    Example("the saucers all go in the cupboard", "all go", ""),                     # words42
+), first_words(OBLIGED) | _FLOATING, "the 'should go' of 'the bowl should go in Y', dropped: 'put' was unsaid before")
 WISHED_PLACED_RULE = Rule("a wish for where a thing is", _wished_placed, (
     Example("I want the mug on the shelf", "I want", Tag.VERB),
     Example("I'd like the books in the box, please", "I'd like", Tag.VERB),
@@ -2147,6 +2175,10 @@ STATE_QUESTION = Rule("is X in a state", _state_question, (
     Example("is the washing machine running?", "running", Tag.COND),
     Example("is grandpa sitting down or standing up?", "sitting down or standing up", Tag.COND),
 ), _WHETHER_IS, "'is X open?': check X (LookAt), the state asked kept")
+WHETHER_UNJOINED = Rule("asked whether, no joint", _whether_unjoined, (
+    Example("go over to the shelf see if there are any cups and bring me one", "see if there are", Tag.VERB),
+), first_words(_ASKERS), "'see if ...' right after a phrase: a clause of its own, said without 'and'",
+   after=frozenset([Tag.WORD, Tag.NAME, Tag.PRON, Tag.LABEL]))
 ASKED_WHETHER = Rule("asked whether", _asked_whether, (
     Example("Could you check if the door is closed?", "check if", Tag.VERB),
     Example("tell me whether the stove is still on", "tell me whether", Tag.VERB),
@@ -2206,6 +2238,7 @@ TOLD_HOW_MANY = Rule("said how many", _told_how_many, (
     Example("Report to me how many cups are in the sink.", "Report to me how many", Tag.VERB),
     Example("say how many people are in the hall", "say how many", Tag.VERB),
     Example("tell to me how many jars are in the shed", "tell to me how many", Tag.VERB),
+    Example("tell me please how many jars are in the shed", "tell me please how many", Tag.VERB),   # words42
 ), None, "a verb of saying and 'how many': tell me how many (Count)")
 HOW_MANY_SEEN = Rule("how many X can you see", _how_many_seen, (
     Example("How many dishes can you see on the dining table?", "can", ""),

@@ -6,15 +6,17 @@ from __future__ import annotations
 from seal_cli.language.english import (
     DEPARTURE_MEANS,
     END_MARKS,
+    FOLLOW_ASKED,
     PARTICLES,
     PATH_ALONE,
     PATH_MEANS,
+    PERSON_PRONOUNS,
     PREPOSITIONS,
     TITLES,
 )
 from seal_cli.language.morphology import in_dictionary, in_verb_tables, noun_lemma, participles, verb_lemma
 from seal_cli.language.rule import Example, Match, Rule
-from seal_cli.language.state import CLOSED, State, match_phrase, merge
+from seal_cli.language.state import CLOSED, State, longest_phrase, match_phrase, merge
 from seal_cli.language.tags import Tag
 from seal_cli.language.tokens import Word, capitalised
 from seal_cli.language.verb_objects import object_share
@@ -132,6 +134,44 @@ def _told_to_do(s: State, i: int) -> Match | None:
     return Match(end - i, (words[i].tagged(Tag.WH), s.emit(i + 1, end - i - 1, Tag.SAID).words[0]))
 
 
+_ASKED_PERSON_WORDS = 8
+"""The most words the person asked to follow may have ("the man in the red hat by the door")."""
+
+
+def _follow_asked_at(s: State, i: int) -> int:
+    """Where "to follow you" starts after the person asked at ``i`` ("ask *Anna* to follow you"; 0: none): the words
+    between name a person (a name, a pronoun of a person, or a noun of people) and hold no verb or punctuation."""
+    words = s.words
+    unit, _, asked = FOLLOW_ASKED
+    person = False
+    for k in range(i, min(len(words), i + _ASKED_PERSON_WORDS)):
+        low = words[k].lower
+        if k > i and person and low == "to" and longest_phrase(words, k, asked):
+            return k
+        if low == "to":
+            return 0                                              # "ask Anna to bring ...": something else asked
+        if not low.isalpha() and "'" not in low or low in END_MARKS or s.verb_at(k) is not None and k == i:
+            return 0
+        person = person or capitalised(words[k]) or low in PERSON_PRONOUNS or low == "them" or \
+            low in s.lexicon.people or noun_lemma(low) in s.lexicon.people
+    return 0
+
+
+def _follow_asked(s: State, i: int) -> Match | None:
+    unit, asking, _ = FOLLOW_ASKED
+    if s.words[i].lower not in asking or unit not in s.lexicon.units or not _follow_asked_at(s, i + 1):
+        return None
+    return Match(1, (merge(s.words, i, 1, Tag.VERB, unit),), expect=False, verb=unit, using=False)
+
+
+def _follow_asked_dropped(s: State, i: int) -> Match | None:
+    unit, asking, asked = FOLLOW_ASKED
+    if s.verb_index < 0 or s.out[s.verb_index].info != unit or s.out[s.verb_index].lower not in asking:
+        return None
+    n = longest_phrase(s.words, i, asked)
+    return Match(n) if n else None                               # "ask Anna *to follow you* to the kitchen"
+
+
 def _purpose(s: State, i: int) -> Match | None:
     if s.purpose(i):
         return Match(1, (s.words[i].tagged(Tag.SEP),), expect=True)   # "take the remote to turn on the lamp"
@@ -190,6 +230,13 @@ TOLD_TO_DO = Rule("told to do what the robot cannot", _told_to_do, (
     Example("tell the guest to sit", "sit", Tag.SAID),
 ), frozenset(["to"]), "'to' and a verb of English no frame has, after the person a verb of saying tells: what is "
    "said (what Anna is to do, not the robot)")
+FOLLOW_ASKED_RULE = Rule("asked to follow", _follow_asked, (
+    Example("ask Anna to follow you to the kitchen", "ask", Tag.VERB),
+    Example("tell the man in the red hat to come with you", "tell", Tag.VERB),
+), FOLLOW_ASKED[1], "'ask X to follow you (to Y)': guide X (to Y)")
+FOLLOW_ASKED_DROPPED = Rule("asked to follow: what is asked", _follow_asked_dropped, (
+    Example("ask Anna to follow you to the kitchen", "to follow you", ""),
+), frozenset(["to"]), "the 'to follow you' of 'ask X to follow you': dropped, the verb is the guiding")
 PURPOSE = Rule("clause of purpose", _purpose, (
     Example("take the remote to turn on the lamp", "to", Tag.SEP),
 ), frozenset(["to"]), "'to' and a verb of the library with its object: a clause of its own")
