@@ -32,7 +32,7 @@ __all__ = ["alfred2d_data", "attacker_cases", "chain_library", "hostile14_cases"
            "hostile17_cases", "hostile18_cases", "hostile19_cases", "hostile20_cases", "hostile21_cases",
            "hostile22_cases", "hostile23_cases", "hostile24_cases", "hostile25_cases", "hostile26_cases",
            "hostile27_cases", "hostile28_cases", "hostile29_bag_cases", "hostile29_cases",
-           "hostile29_environment_cases", "rgba_png", "robot_map",
+           "hostile29_environment_cases", "hostile30_leftover_cases", "rgba_png", "robot_map",
            "sparse_pgm", "split_house"]
 
 DIGITS = "1" * 5_000
@@ -303,6 +303,7 @@ def attacker_cases() -> Iterator[Case]:  # noqa: PLR0915 - one list of cases, re
     yield from hostile29_cases()
     yield from hostile29_bag_cases()
     yield from hostile29_environment_cases()
+    yield from hostile30_leftover_cases()
 
 
 def hostile14_cases() -> Iterator[Case]:
@@ -1942,3 +1943,110 @@ def hostile29_environment_cases() -> Iterator[Case]:
                                                           "--command", "go to the sofa", "--layouts", "1",
                                                           "--policies", "oracle", "--particles", "20", "--jobs", "64"),
                codes=(0,), says=r"(?s).", timeout=120)
+
+
+def _column_of(data: bytes, key: bytes, nth: int = 2) -> int:
+    """The 1-based column of the ``nth`` JSON key ``key`` (with its quotes) in ``data``'s line holding it."""
+    needle, at = b'"' + key + b'"', -1
+    for _ in range(nth):
+        at = data.index(needle, at + 1)
+    return at - data.rfind(b"\n", 0, at)
+
+
+def hostile30_leftover_cases() -> Iterator[Case]:  # noqa: PLR0915 - one list of cases, read top to bottom
+    """Round hostile30's first batch, what hostile29 noticed and left: YAML's own tags (``!!str`` on a number where a
+    number goes was read as the number, ``!!int`` on a name as the name); JSON objects with a key twice (the last
+    was taken, as Python's reader takes it); a P5 image with bytes after its pixels (read, the rest passed over) or
+    too few; a question given as ``--done``; a benchmark's output into a folder root cannot write (``/proc``,
+    ``/sys``: the only ones a root-run bench has)."""
+    (_, head), (_, image) = robot_map()
+    def tagged(name: str, old: bytes, new: bytes, codes: tuple[int, ...], says: str) -> Case:
+        assert old in head, f"the researcher's map changed: update the case {name!r}"
+        return Case(f"A validate of a ROS map {name}", ("validate", "m.yaml"),
+                    (("m.yaml", head.replace(old, new)), ("map.pgm", image)), codes=codes, keep=("m.yaml", "map.pgm"),
+                    says=says)
+    # -- YAML's own tags: each read as YAML defines it -----------------------------------------------------------------
+    yield tagged("whose resolution is tagged !!str", b"resolution: 0.050000", b"resolution: !!str 0.050000", (1,),
+                 r"m\.yaml:3:13: .*resolution")
+    yield tagged("whose name is tagged !!int", b"name: lab", b"name: !!int lab", (1,), r"m\.yaml:9:7: .*!!int")
+    yield tagged("whose negate is tagged !!bool on a 0", b"negate: 0", b"negate: !!bool 0", (1,),
+                 r"m\.yaml:5:9: .*!!bool")
+    yield tagged("whose origin is tagged !!float on an integer", b"origin: [-5.000000", b"origin: [!!float -5", (0,),
+                 r"ok: ")
+    yield tagged("whose name is tagged !!str on a number", b"name: lab", b"name: !!str 5", (0,), r"ok: ")
+    yield tagged("whose rooms are tagged !!map on a list", b"rooms:\n", b"rooms: !!map\n", (1,),
+                 r"m\.yaml:10:8: .*!!map")
+    yield tagged("whose robot is tagged !!seq on a mapping", b"robot: {pose", b"robot: !!seq {pose", (1,),
+                 r"m\.yaml:\d+:8: .*!!seq")
+    yield tagged("whose place is tagged !!null on a name", b"table_1, class", b"!!null table_1, class", (1,),
+                 r"m\.yaml:\d+:\d+: .*!!null")
+    yield tagged("whose key is tagged !!str", b"resolution: 0.05", b"!!str resolution: 0.05", (0,), r"ok: ")
+    yield Case("A localize whose observation's pose is tagged !!str",
+               ("localize", "--map", "apartment", "--task", "go to the kitchen", "--steps", "1", "--particles", "20",
+                "--observations", "o.yaml"), (("o.yaml", b"- pose: [!!str -6, -3]\n  detections: []\n"),), codes=(1,),
+               keep=("o.yaml",), says=r"o\.yaml:1:10: ")
+    # -- JSON objects with a key twice: refused at the second --------------------------------------------------------
+    line = b'{"text": "go to the kitchen", "text": "go to the bed", "expect": [{"frame": "Go", "elements": ' \
+           b'{"goal": "kitchen"}}]}\n'
+    yield Case("A bench parse --corpus whose line says text twice", ("bench", "parse", "--corpus", "c.jsonl"),
+               (("c.jsonl", line),), codes=(1,), keep=("c.jsonl",),
+               says=rf"c\.jsonl:1:{_column_of(line, b'text')}: .*'text'")
+    nested = b'{"text": "go to the kitchen", "expect": [{"frame": "Go", "elements": {"goal": "kitchen", "goal": ' \
+             b'"bed"}}]}\n'
+    yield Case("A bench parse --corpus whose element says goal twice", ("bench", "parse", "--corpus", "c.jsonl"),
+               (("c.jsonl", b"\n" + nested),), codes=(1,), keep=("c.jsonl",),
+               says=rf"c\.jsonl:2:{_column_of(nested, b'goal')}: .*'goal'")
+    table = "task_type\tobject\treceptacle\tmrecep\tsliced\tgoal_sentence\n"
+    constants = b'{\n  "OBJECTS": ["Apple", "Fridge"],\n  "OBJECTS": ["Apple"]\n}\n'
+    yield Case("A bench parse --constants that says OBJECTS twice",
+               ("bench", "parse", "--corpus", "g.tsv", "--constants", "k.json"),
+               (("g.tsv", (table + "pick_and_place_simple\tApple\tFridge\t\t0\tput an apple in the fridge\n").encode()),
+                ("k.json", constants)), codes=(1,), keep=("g.tsv", "k.json"), says=r"k\.json:3:3: .*'OBJECTS'")
+    tasks = ("bench", "tasks", "--data", "d", "--policies", "sefm", "--jobs", "1", "--particles", "20")
+    data = dict(alfred2d_data())
+    plans = data["d/floorplans.json"].replace(b'"scene_type": "kitchen"',
+                                              b'"scene_type": "kitchen", "scene_type": "bathroom"', 1)
+    yield Case("A bench tasks on ALFRED-2D floor plans that say scene_type twice", tasks,
+               tuple({**data, "d/floorplans.json": plans}.items()), codes=(1,), keep=tuple(data),
+               says=rf"d/floorplans\.json:1:{_column_of(plans, b'scene_type')}: .*'scene_type'", timeout=120)
+    trial = data["d/trials_valid_seen.jsonl"].replace(b'"split": "valid_seen"',
+                                                      b'"split": "valid_seen", "split": "train"')
+    yield Case("A bench tasks on an ALFRED-2D trial that says split twice", tasks,
+               tuple({**data, "d/trials_valid_seen.jsonl": trial}.items()), codes=(1,), keep=tuple(data),
+               says=rf"d/trials_valid_seen\.jsonl:1:{_column_of(trial, b'split')}: .*'split'", timeout=120)
+    yield Case("A validate of a map written as JSON that says name twice", ("validate", "m.json"),
+               (("m.json", b'{"name": "a", "name": "b", "bounds": [0, 0, 10, 10],\n "rooms": [{"name": "hall", '
+                           b'"box": [0, 0, 10, 10]}]}\n'),), codes=(1,), keep=("m.json",),
+               says=r"m\.json:1:15: .*'name'")
+    # -- a P5 image with more bytes than its pixels, or fewer ----------------------------------------------------------
+    def pgm(name: str, data: bytes, codes: tuple[int, ...], says: str) -> Case:
+        return Case(f"A validate of a ROS map whose PGM {name}", ("validate", "m.yaml"),
+                    (("m.yaml", head), ("map.pgm", data)), codes=codes, keep=("m.yaml", "map.pgm"), says=says)
+    yield pgm("has bytes after its pixels", image + b"GARBAGE" * 10, (1,), r"m\.yaml:1:8: .*70 bytes after")
+    yield pgm("has its pixels twice (16-bit saved under a maximum of 255)", image + image[15:], (1,),
+              r"m\.yaml:1:8: .*after")
+    yield pgm("ends with a newline after its pixels", image + b"\n", (0,), r"ok: ")
+    yield pgm("holds a second image after the first (netpbm's several images)", image + image, (0,), r"ok: ")
+    yield pgm("is one byte short", image[:-1], (1,), r"m\.yaml:1:8: .*truncated")
+    text = b"P2\n200 200\n255\n" + b" ".join(b"%d" % v for v in image[15:]) + b"\n"
+    yield pgm("(text) has values after its pixels", text + b"7 7\n", (1,), r"m\.yaml:1:8: .*2 values after")
+    yield pgm("(text) ends with blank lines after its pixels", text + b"  \n\n\t\n", (0,), r"ok: ")
+    # -- a question given as --done: the question answered -------------------------------------------------------------
+    yield Case("A plan whose --done is a question (where is the cup?)",
+               ("plan", "bring me the cup", "--map", "apartment", "--done", "where is the cup?"), codes=(0,),
+               says=r"found\(cup\)")
+    yield Case("A run whose --done is a question (how many cups are there?)",
+               ("run", "go to the sofa", "--map", "studio", "--particles", "20", "--done", "how many cups are there?"),
+               codes=(0,), says=r"done: Go")
+    # -- a benchmark's output where root cannot write ----------------------------------------------------------------
+    tiny = ("bench", "tasks", "--suite", "map", "--map", "studio", "--command", "go to the sofa", "--layouts", "1",
+            "--policies", "oracle", "--particles", "20", "--jobs", "1", "--episodes")
+    yield Case("A bench tasks --episodes into /proc", (*tiny, "/proc/e.jsonl"), codes=(1,),
+               says=r"--episodes /proc/e\.jsonl: folder /proc does not take new files")
+    yield Case("A bench tasks --episodes into /sys", (*tiny, "/sys/e.jsonl"), codes=(1,),
+               says=r"--episodes /sys/e\.jsonl: folder /sys does not take new files")
+    yield Case("A bench tasks --episodes into /sys/kernel", (*tiny, "/sys/kernel/e.jsonl"), codes=(1,),
+               says=r"--episodes /sys/kernel/e\.jsonl: folder /sys/kernel does not take new files")
+    yield Case("A run --png into /proc/self", ("run", "go to the sofa", "--map", "studio", "--particles", "20",
+                                               "--png", "/proc/self/o.png"), codes=(1,),
+               says=r"--png /proc/self/o\.png: folder /proc/self does not take new files")
