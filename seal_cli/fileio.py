@@ -375,8 +375,9 @@ def compose_documents(text: str, file: str, *, single: bool = False) -> list[Any
         documents = [yaml.compose(text, Loader=loader)] if single else list(yaml.compose_all(text, Loader=loader))
     except yaml.YAMLError as exc:
         raise yaml_problem(exc, text, file) from None
+    lines = YAML_BREAKS.split(text) if "!" in text else []  # a tag written in the file is read as YAML reads it
     for root in documents:
-        check_size(root, file, MAX_VALUES)
+        check_size(root, file, MAX_VALUES, lines)
     place_aliases(documents, text, loader)
     if "<<" in text:
         for root in documents:
@@ -401,7 +402,8 @@ def read_yaml(path: str | Path, max_values: int | None = None, what: str = "file
     try:
         if len(text) > limit:  # a value takes at least one character: a shorter file cannot hold more
             count_values(text, loader, str(path), limit, what)
-        check_size(yaml.compose(text, Loader=loader), str(path), limit)  # no alias bomb is expanded
+        check_size(yaml.compose(text, Loader=loader), str(path), limit,  # no alias bomb is expanded
+                   YAML_BREAKS.split(text) if "!" in text else [])
         return yaml.load(text, Loader=loader)  # noqa: S506 (a safe loader)
     except yaml.YAMLError as exc:
         raise yaml_problem(exc, text, str(path)) from None
