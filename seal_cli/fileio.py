@@ -439,9 +439,14 @@ def json_value(text: str, path: str | Path, line: int = 1) -> Any:
     import json
 
     try:
-        return check_whole_characters(json.loads(text), text, path, line)
+        return check_whole_characters(json.loads(text, object_pairs_hook=_each_key_once), text, path, line)
     except json.JSONDecodeError:
         raise
+    except _RepeatedKey:
+        at, key = _repeated_key(text)
+        shown = key if len(key) <= 60 else key[:59] + "…"
+        message = (f"this object says the key {shown!r} twice: JSON readers differ on which one counts (Python's "
+                   "takes the last, others the first or refuse), so say it once")
     except RecursionError:
         at = _depth_reached(text, DEEPEST_SHOWN)
         message = f"this value is nested too deeply for seal to read ({DEEPEST_SHOWN} levels deep here, and deeper)"
@@ -454,6 +459,46 @@ def json_value(text: str, path: str | Path, line: int = 1) -> Any:
     shown = text[before + 1:].split("\n", 1)[0]
     raise SealError(message, Where(str(path), line + text.count("\n", 0, at), at - before),
                     source_line=shown if len(shown) <= 200 else None) from None
+
+
+class _RepeatedKey(Exception):
+    """An object of a JSON text says a key twice (found by :func:`_each_key_once`, placed by :func:`_repeated_key`)."""
+
+
+def _each_key_once(pairs: list[tuple[str, Any]]) -> dict[str, Any]:
+    """The object of JSON ``pairs``, as Python's reader makes it, but refusing a key said twice (hostile30: the last
+    was taken silently, ``{"text": "a", "text": "b"}`` scored as "b")."""
+    value = dict(pairs)
+    if len(value) != len(pairs):
+        raise _RepeatedKey
+    return value
+
+
+_JSON_TOKEN = re.compile(r'"(?:[^"\\]|\\.)*"|[{}\[\],:]')
+"""A JSON string, or one of JSON's structural characters (what else a JSON text holds has neither)."""
+
+
+def _repeated_key(text: str) -> tuple[int, str]:
+    """Where the first key said twice in one object of a JSON text is (its second saying), and the key; the text
+    is JSON (Python's reader read it), walked without recursion."""
+    import json
+
+    objects: list[set[str] | None] = []  # the keys of each open object; None for an open array
+    last = ""
+    for token in _JSON_TOKEN.finditer(text):
+        word = token.group()
+        if word[0] == '"':
+            if objects and objects[-1] is not None and last in ("{", ","):
+                key = json.loads(word)
+                if key in objects[-1]:
+                    return token.start(), key
+                objects[-1].add(key)
+        elif word in "{[":
+            objects.append(set() if word == "{" else None)
+        elif word in "}]" and objects:
+            objects.pop()
+        last = word[0]
+    return 0, ""
 
 
 def _depth_reached(text: str, depth: int) -> int:
