@@ -1056,12 +1056,25 @@ def _reserve(option: str, target: Path, by_option: bool = True) -> _Output:
             from None
 
 
+_NO_NEW_FILES = frozenset({errno.ENOENT, errno.EACCES, errno.EPERM, errno.EROFS})
+"""What the system says when a folder that exists takes no new file: ``/proc`` says "No such file or directory" (its
+files are the kernel's), ``/sys`` "Permission denied" even to root, a read-only mount EROFS (hostile30: "No such file
+or directory (in folder /proc)" named a folder that exists)."""
+
+
+def _root() -> bool:
+    return hasattr(os, "geteuid") and os.geteuid() == 0
+
+
 def _reason(error: OSError, target: Path, *, in_folder: bool = False) -> str:
     """Why writing ``target`` failed, in words: a folder that does not exist (or was removed while the command ran)
     is named, and with ``in_folder`` the folder of any other failure."""
     folder = target.parent
     if error.errno == errno.ENOENT and not folder.is_dir():
         return f"folder {shown_path(folder)} does not exist"
+    if in_folder and error.errno in _NO_NEW_FILES and folder.is_dir():  # the temporary is the folder's first new file
+        return (f"folder {shown_path(folder)} does not take new files ({error.strerror}"
+                f"{'; seal runs as root here, so it is the file system that refuses' if _root() else ''})")
     return f"{error.strerror}" + (f" (in folder {shown_path(folder)})" if in_folder else "")
 
 

@@ -714,3 +714,24 @@ def test_json_keys_said_once_in_each_object_are_read(tmp_path: Path) -> None:
     path = tmp_path / "k.json"
     path.write_text('{"a": {"b": 1}, "c": {"b": 2}, "d": [{"b": 3}, {"b": 4}]}', encoding="utf-8")
     assert read_json(path) == {"a": {"b": 1}, "c": {"b": 2}, "d": [{"b": 3}, {"b": 4}]}
+
+
+@pytest.mark.skipif(not Path("/proc/self").is_dir(), reason="needs Linux's /proc")
+def test_an_output_into_a_folder_that_takes_no_new_file_says_so_of_the_folder() -> None:
+    """``/proc`` says "No such file or directory" even to root: it named a folder that exists (hostile30)."""
+    from seal_cli import fileio
+
+    with pytest.raises(SealError, match=r"cannot write --png /proc/o\.png: folder /proc does not take new files "
+                                        r"\(No such file or directory"), fileio.Outputs({"--png": Path("/proc/o.png")}):
+        pass
+
+
+def test_a_read_only_folder_is_said_so(tmp_path: Path) -> None:
+    import errno
+
+    from seal_cli import fileio
+
+    reason = fileio._reason(OSError(errno.EROFS, "Read-only file system"), tmp_path / "o.png", in_folder=True)
+    assert reason.startswith(f"folder {tmp_path} does not take new files (Read-only file system")
+    gone = fileio._reason(OSError(errno.ENOENT, "No such file or directory"), tmp_path / "d" / "o.png", in_folder=True)
+    assert gone == f"folder {tmp_path / 'd'} does not exist"
