@@ -32,7 +32,7 @@ __all__ = ["alfred2d_data", "attacker_cases", "chain_library", "hostile14_cases"
            "hostile17_cases", "hostile18_cases", "hostile19_cases", "hostile20_cases", "hostile21_cases",
            "hostile22_cases", "hostile23_cases", "hostile24_cases", "hostile25_cases", "hostile26_cases",
            "hostile27_cases", "hostile28_cases", "hostile29_bag_cases", "hostile29_cases",
-           "hostile29_environment_cases", "hostile30_leftover_cases", "rgba_png", "robot_map",
+           "hostile29_environment_cases", "hostile30_cases", "hostile30_leftover_cases", "rgba_png", "robot_map",
            "sparse_pgm", "split_house"]
 
 DIGITS = "1" * 5_000
@@ -304,6 +304,7 @@ def attacker_cases() -> Iterator[Case]:  # noqa: PLR0915 - one list of cases, re
     yield from hostile29_bag_cases()
     yield from hostile29_environment_cases()
     yield from hostile30_leftover_cases()
+    yield from hostile30_cases()
 
 
 def hostile14_cases() -> Iterator[Case]:
@@ -2050,3 +2051,178 @@ def hostile30_leftover_cases() -> Iterator[Case]:  # noqa: PLR0915 - one list of
     yield Case("A run --png into /proc/self", ("run", "go to the sofa", "--map", "studio", "--particles", "20",
                                                "--png", "/proc/self/o.png"), codes=(1,),
                says=r"--png /proc/self/o\.png: folder /proc/self does not take new files")
+
+
+def _png(width: int, height: int, depth: int = 8, colour: int = 0, rows: bytes | None = None,
+         crc: bool = True) -> bytes:
+    """A PNG of ``width`` × ``height`` (bit ``depth``, ``colour`` type), its pixel rows ``rows`` (default: all 0xfe,
+    each row with its filter byte), with right or wrong CRCs."""
+    import struct
+    import zlib
+
+    def chunk(kind: bytes, body: bytes) -> bytes:
+        check = zlib.crc32(kind + body) if crc else 0
+        return struct.pack(">I", len(body)) + kind + body + struct.pack(">I", check)
+
+    channels = {0: 1, 2: 3, 3: 1, 4: 2, 6: 4}[colour]
+    row = b"\x00" + b"\xfe" * (width * channels * depth // 8)
+    body = zlib.compress(rows if rows is not None else row * height)
+    palette = chunk(b"PLTE", b"\xfe\xfe\xfe\x00\x00\x00") if colour == 3 else b""
+    return (b"\x89PNG\r\n\x1a\n" + chunk(b"IHDR", struct.pack(">IIBBBBB", width, height, depth, colour, 0, 0, 0))
+            + palette + chunk(b"IDAT", body) + chunk(b"IEND", b""))
+
+
+def hostile30_cases() -> Iterator[Case]:  # noqa: PLR0915 - one list of cases, read top to bottom
+    """Round hostile30's second batch, every input kind: maps (keys passed over without an image, names that differ
+    only by case or by Unicode's composition, names holding a NUL or an escape through YAML's escapes, a map of only
+    a BOM or of only comments), map images (PNGs cut short, with a wrong CRC, 16-bit, with a palette, a GIF named
+    .png, ``/proc/self/mem``), frame libraries (a folder holding a FIFO, a dangling link or a loop; a frame file of
+    only a BOM; a frame name with a zero-width space; an unclosed string at the end), vocabularies, observations and
+    trajectories (empty, CR-only, nested deep), command texts (zero-width, fullwidth, combining, tag characters,
+    variation selectors, an ideographic space alone, a line separator), ``seal validate`` given one file twice."""
+    small = b"name: m\nbounds: [0, 0, 10, 10]\nrooms:\n  - {name: kitchen, box: [0, 0, 5, 10]}\n" \
+            b"  - {name: hall, box: [5, 0, 10, 10]}\n"
+    def map_case(name: str, data: bytes, codes: tuple[int, ...], says: str,
+                 argv: tuple[str, ...] = ("validate", "m.yaml"), *more: tuple[str, bytes | str]) -> Case:
+        return Case(f"A {argv[0]} of a map {name}", argv, (("m.yaml", data), *more), codes=codes,
+                    keep=("m.yaml", *(n for n, c in more if isinstance(c, bytes))), says=says)
+    # -- maps ----------------------------------------------------------------------------------------------------------
+    yield map_case("whose resolution is a word and has no image", small + b"resolution: abc\n", (1,),
+                   r"m\.yaml:6:\d+: .*resolution")
+    yield map_case("whose origin is a mapping and has no image", small + b"origin: {x: 1}\n", (1,),
+                   r"m\.yaml:6:\d+: .*origin")
+    yield map_case("whose rooms differ only by case", small.replace(b"name: hall", b"name: Kitchen"), (1,),
+                   r"m\.yaml:5:\d+: .*[Kk]itchen")
+    yield map_case("whose rooms differ only by Unicode's composition", small.replace(b"kitchen", "café".encode())
+                   .replace(b"name: hall", "name: cafe\u0301".encode()), (1,), r"m\.yaml:5:\d+: .*caf")
+    yield map_case("whose room's name holds a NUL through a YAML escape",
+                   small.replace(b"name: hall", b'name: "ha\\0ll"'), (1,), r"m\.yaml:5:\d+: ")
+    yield map_case("whose place's name holds an escape sequence through a YAML escape",
+                   small + b'places:\n  - {name: "sink\\e[31m_1", class: sink, at: [1, 1]}\n', (1,),
+                   r"m\.yaml:7:\d+: ")
+    yield map_case("whose class holds a zero-width space", small + "places:\n  - {name: sink_1, class: \"si\u200bnk\","
+                   " at: [1, 1]}\n".encode(), (1,), r"m\.yaml:7:\d+: ")
+    yield map_case("of only a BOM", b"\xef\xbb\xbf", (1,), r"m\.yaml: ")
+    yield map_case("of only comments and CRLF", b"# a map\r\n# more\r\n", (1,), r"m\.yaml: ")
+    yield Case("A validate of a map of one flow line of 2 MB, its 60,000 rooms one over another", ("validate", "m.yaml"),
+               (("m.yaml", b"{name: m, bounds: [0, 0, 10, 10], rooms: [" + b", ".join(
+                   b"{name: r%d, box: [0, 0, 1, 1]}" % i for i in range(60_000)) + b"]}\n"),), codes=(1,),
+               keep=("m.yaml",), says=r"m\.yaml:1:\d+: ", timeout=180)
+    yield map_case("whose robot's pose is a string of digits", small + b"robot: {pose: '1 2 0'}\n", (1,),
+                   r"m\.yaml:6:\d+: .*pose")
+    yield map_case("whose bounds are nested 50,000 deep", small.replace(b"bounds: [0, 0, 10, 10]",
+                                                                         b"bounds: " + b"[" * 50_000 + b"]" * 50_000),
+                   (1,), r"m\.yaml:2:\d+: ")
+    # -- map images ----------------------------------------------------------------------------------------------------
+    (_, head), (_, pgm) = robot_map()
+    png_head = head.replace(b"image: map.pgm", b"image: map.png")
+    def image_case(name: str, data: bytes, codes: tuple[int, ...], says: str) -> Case:
+        return Case(f"A validate of a ROS map whose image {name}", ("validate", "m.yaml"),
+                    (("m.yaml", png_head), ("map.png", data)), codes=codes, keep=("m.yaml", "map.png"), says=says)
+    good = _png(200, 200)
+    yield image_case("is a PNG cut short in its pixels", good[:60], (1,), r"m\.yaml:1:8: ")
+    yield image_case("is a PNG whose CRCs are wrong", _png(200, 200, crc=False), (1,), r"m\.yaml:1:8: ")
+    yield image_case("is a 16-bit grey PNG", _png(200, 200, depth=16), (0,), r"ok: ")
+    yield image_case("is a PNG with a palette", _png(200, 200, colour=3, rows=(b"\x00" + b"\x00" * 200) * 200), (0,),
+                     r"ok: ")
+    yield image_case("is a PNG of width 0", _png(0, 200), (1,), r"m\.yaml:1:8: ")
+    yield image_case("is a GIF named .png", b"GIF89a\x01\x00\x01\x00\x00\x00\x00;", (1,), r"m\.yaml:1:8: ")
+    yield image_case("is a PNG whose pixels are 10 MB of zeros once decompressed", _png(
+        200, 200, rows=b"\x00" * 10_000_000), (1,), r"m\.yaml")
+    yield Case("A validate of a ROS map whose image is /proc/self/mem", ("validate", "m.yaml"),
+               (("m.yaml", head.replace(b"image: map.pgm", b"image: /proc/self/mem")),), codes=(1,), keep=("m.yaml",),
+               says=r"m\.yaml:1:8: ")
+    yield Case("A validate of a ROS map whose image is /dev/stdin, stdin closed", ("validate", "m.yaml"),
+               (("m.yaml", head.replace(b"image: map.pgm", b"image: /dev/stdin")),), codes=(1,), keep=("m.yaml",),
+               stream="closed-stdin", says=r"m\.yaml:1:8: ")
+    yield Case("A validate of a ROS map whose PGM header has a comment with a NUL and Latin-1",
+               ("validate", "m.yaml"),
+               (("m.yaml", head), ("map.pgm", pgm.replace(b"P5\n", b"P5\n# caf\xe9 \x00\n", 1))), codes=(0,), keep=("m.yaml", "map.pgm"), says=r"ok: ")
+    # -- frame libraries -----------------------------------------------------------------------------------------------
+    whisk = b'frame Whisk "whisk" {\n  theme: object\n  do navigate(theme)\n}\n'
+    lib = ("plan", "whisk the cup", "--framelib", "+d")
+    yield Case("A plan --framelib of a folder holding a FIFO named .frame", lib,
+               (("d/a.frame", whisk), ("d/b.frame", "fifo")), codes=(1,), keep=("d/a.frame",), says=r"d/b\.frame",
+               timeout=30)
+    yield Case("A plan --framelib of a folder holding a dangling link", lib,
+               (("d/a.frame", whisk), ("d/b.yaml", "link:nowhere.yaml")), codes=(1,), keep=("d/a.frame",),
+               says=r"d/b\.yaml")
+    yield Case("A plan --framelib of a folder holding a link to itself", lib,
+               (("d/a.frame", whisk), ("d/b.frame", "link:b.frame")), codes=(1,), keep=("d/a.frame",),
+               says=r"d/b\.frame")
+    yield Case("A plan --framelib of a folder holding a link to the folder", lib,
+               (("d/a.frame", whisk), ("d/e", "link:.")), codes=(0,), keep=("d/a.frame",), says=r"Whisk")
+    yield Case("A plan --framelib of a frame file of only a BOM", ("plan", "go to the kitchen", "--framelib",
+                                                                  "+f.frame"),
+               (("f.frame", b"\xef\xbb\xbf"),), codes=(0, 1), keep=("f.frame",), says=r"f\.frame|Go")
+    yield Case("A validate of a frame whose name holds a zero-width space", ("validate", "f.frame"),
+               (("f.frame", whisk.replace(b"frame Whisk", "frame Wh\u200bisk".encode())),), codes=(1,),
+               keep=("f.frame",), says=r"f\.frame:1:\d+: ")
+    yield Case("A validate of a frame file ending inside a string", ("validate", "f.frame"),
+               (("f.frame", b'frame Whisk "whisk'),), codes=(1,), keep=("f.frame",), says=r"f\.frame:1:\d+: ")
+    yield Case("A plan on a frame file with a NUL in a comment", ("plan", "whisk the cup", "--framelib", "+f.frame"),
+               (("f.frame", b"// a \x00 comment\n" + whisk),), codes=(0,), keep=("f.frame",), says=r"Whisk")
+    yield Case("A plan on a YAML frame whose unit holds a line separator", ("plan", "whisk the cup", "--framelib",
+                                                                             "+f.yaml"),
+               (("f.yaml", b'frames:\n  - frame: Whisk\n    lexical_units: ["whisk\\L it"]\n    elements:\n'
+                           b"      theme: {type: object}\n    actions: [navigate(theme)]\n"),), codes=(1,),
+               keep=("f.yaml",), says=r"f\.yaml:3:\d+: ")
+    yield Case("A validate of the same frame file given twice", ("validate", "f.frame", "./f.frame"),
+               (("f.frame", whisk),), codes=(0, 1), keep=("f.frame",), says=r"(?s)f\.frame")
+    yield Case("A validate of a frame file and a link to it", ("validate", "f.frame", "l.frame"),
+               (("f.frame", whisk), ("l.frame", "link:f.frame")), codes=(0, 1), keep=("f.frame",),
+               says=r"(?s)\.frame")
+    # -- vocabularies, observations, trajectories ----------------------------------------------------------------------
+    loc = ("localize", "--map", "apartment", "--task", "go to the kitchen", "--steps", "1", "--particles", "20")
+    yield Case("A parse --vocabulary of only a BOM", ("parse", "--vocabulary", "v.yaml", "stir the cup"),
+               (("v.yaml", b"\xef\xbb\xbf"),), codes=(0, 1), keep=("v.yaml",), says=r"v\.yaml|Stir|stir")
+    yield Case("A parse --vocabulary nested 50,000 deep", ("parse", "--vocabulary", "v.yaml", "stir the cup"),
+               (("v.yaml", b"cup: " + b"[" * 50_000 + b"]" * 50_000 + b"\n"),), codes=(1,), keep=("v.yaml",),
+               says=r"v\.yaml:1:\d+: ")
+    yield Case("A localize --observations of CR-only lines", (*loc, "--observations", "o.yaml"),
+               (("o.yaml", b"- pose: [-6, -3]\r  detections: []\r- pose: [-6, -3]\r  detections: []\r"),),
+               codes=(0,), keep=("o.yaml",), says=r"(?s).")
+    yield Case("A localize --observations nested 50,000 deep", (*loc, "--observations", "o.yaml"),
+               (("o.yaml", b"- pose: " + b"[" * 50_000 + b"]" * 50_000 + b"\n"),), codes=(1,), keep=("o.yaml",),
+               says=r"o\.yaml:1:\d+: ")
+    yield Case("A localize --trajectory of only a BOM and CRLF", (*loc, "--trajectory", "t.yaml"),
+               (("t.yaml", b"\xef\xbb\xbf\r\n"),), codes=(1,), keep=("t.yaml",), says=r"t\.yaml")
+    yield Case("A localize --observations whose detection's class holds a NUL", (*loc, "--observations", "o.yaml"),
+               (("o.yaml", b'- pose: [-6, -3]\n  detections: [{class: "cu\\0p", at: [-5, -3]}]\n'),), codes=(1,),
+               keep=("o.yaml",), says=r"o\.yaml:2:\d+: ")
+    yield Case("A localize --labels of a mapping with a key twice", ("localize", "--map", "apartment", "--bag",
+                                                                     "x.mcap", "--labels", "l.yaml", "--task",
+                                                                     "go to the kitchen"),
+               (("l.yaml", b"1: cup\n1: spoon\n"), ("x.mcap", b"\x89MCAP0\r\n")), codes=(1,), keep=("l.yaml",),
+               says=r"l\.yaml:2:1: |x\.mcap")
+    # -- command texts -------------------------------------------------------------------------------------------------
+    run = ("run", "--map", "studio", "--particles", "20")
+    def said(name: str, text: str, codes: tuple[int, ...], says: str, argv: tuple[str, ...] = run) -> Case:
+        return Case(f"A {argv[0]} of a command {name}", (argv[0], text, *argv[1:]), codes=codes, says=says)
+    yield said("with a zero-width space inside a word", "go to the so\u200bfa", (0, 1), r"column \d+|done: Go")
+    yield said("with a zero-width joiner inside a word", "go to the so\u200dfa", (0, 1), r"column \d+|done: Go")
+    yield said("in fullwidth letters", "ｇｏ ｔｏ ｔｈｅ ｓｏｆａ", (0, 1), r"column \d+|done: Go")
+    yield said("whose every letter has a combining mark", "".join(c + "\u0308" if c.isalpha() else c
+                                                                 for c in "go to the sofa"), (1,), r"column \d+")
+    yield said("of Unicode tag characters", "go to the sofa\U000e0067\U000e006f", (0, 1), r"column \d+|done: Go")
+    yield said("with a variation selector", "go to the sofa\ufe0f", (0, 1), r"column \d+|done: Go")
+    yield said("of an ideographic space alone", "\u3000", (1, 2), r"empty|command|nothing")
+    yield said("holding a line separator", "go to the sofa\u2028and open the fridge", (0, 1),
+               r"column \d+|done: ")
+    yield said("with a right-to-left mark between words", "go to\u200f the sofa", (0, 1), r"column \d+|done: Go")
+    yield said("with a BOM inside", "go to the\ufeff sofa", (0, 1), r"column \d+|done: Go")
+    yield said("of a Hangul filler", "go to the \u3164", (1,), r"column \d+")
+    yield said("of emoji with skin tones and joiners", "go to the \U0001f469\U0001f3fd\u200d\U0001f373", (1,),
+               r"column \d+")
+    yield said("with a dotted capital I", "GO TO THE SOFA \u0130", (0, 1), r"column \d+|done: Go")
+    yield Case("A plan --holding of a zero-width space", ("plan", "put it on the table", "--map", "apartment",
+                                                          "--holding", "\u200b"), codes=(1,), says=r"--holding")
+    yield Case("A plan --holding with a right-to-left override", ("plan", "put it on the table", "--map", "apartment",
+                                                                  "--holding", "cu\u202ep"), codes=(1,),
+               says=r"--holding")
+    yield Case("A localize --task of a zero-width joiner alone", ("localize", "--map", "apartment", "--task",
+                                                                  "\u200d", "--steps", "1", "--particles", "20"),
+               codes=(1, 2), says=r"--task|empty|command")
+    yield Case("A parse --file of a BOM, CRLF and a line of only a zero-width space", ("parse", "--file", "c.txt"),
+               (("c.txt", "\ufeffgo to the kitchen\r\n\u200b\r\nopen the fridge\r\n".encode()),), codes=(0, 1),
+               keep=("c.txt",), says=r"c\.txt:2|Go|Open")
