@@ -2104,7 +2104,8 @@ def hostile30_cases() -> Iterator[Case]:  # noqa: PLR0915 - one list of cases, r
                    " at: [1, 1]}\n".encode(), (1,), r"m\.yaml:7:\d+: ")
     yield map_case("of only a BOM", b"\xef\xbb\xbf", (1,), r"m\.yaml: ")
     yield map_case("of only comments and CRLF", b"# a map\r\n# more\r\n", (1,), r"m\.yaml: ")
-    yield Case("A validate of a map of one flow line of 2 MB, its 60,000 rooms one over another", ("validate", "m.yaml"),
+    yield Case("A validate of a map of one flow line of 2 MB, its 60,000 rooms one over another",
+               ("validate", "m.yaml"),
                (("m.yaml", b"{name: m, bounds: [0, 0, 10, 10], rooms: [" + b", ".join(
                    b"{name: r%d, box: [0, 0, 1, 1]}" % i for i in range(60_000)) + b"]}\n"),), codes=(1,),
                keep=("m.yaml",), says=r"m\.yaml:1:\d+: ", timeout=180)
@@ -2137,7 +2138,8 @@ def hostile30_cases() -> Iterator[Case]:  # noqa: PLR0915 - one list of cases, r
                stream="closed-stdin", says=r"m\.yaml:1:8: ")
     yield Case("A validate of a ROS map whose PGM header has a comment with a NUL and Latin-1",
                ("validate", "m.yaml"),
-               (("m.yaml", head), ("map.pgm", pgm.replace(b"P5\n", b"P5\n# caf\xe9 \x00\n", 1))), codes=(0,), keep=("m.yaml", "map.pgm"), says=r"ok: ")
+               (("m.yaml", head), ("map.pgm", pgm.replace(b"P5\n", b"P5\n# caf\xe9 \x00\n", 1))), codes=(0,),
+               keep=("m.yaml", "map.pgm"), says=r"ok: ")
     # -- frame libraries -----------------------------------------------------------------------------------------------
     whisk = b'frame Whisk "whisk" {\n  theme: object\n  do navigate(theme)\n}\n'
     lib = ("plan", "whisk the cup", "--framelib", "+d")
