@@ -483,10 +483,12 @@ class _Reader(NodeReader):
             from seal_cli.maps.formats.occupancy_bag import grid_from_bag
 
             return grid_from_bag(self, nodes)
-        if "image" not in nodes:
+        if "image" not in nodes:  # resolution and origin too: passed over unread, "resolution: abc" was ok (hostile30)
             for key in MAP_SERVER_KEYS[1:]:
-                if key in nodes and key not in ("resolution", "origin"):
-                    self.problem(f"{key} only means something with an image; add image: or remove {key}", nodes[key])
+                if key in nodes:
+                    self.problem(f"{key} only means something with an image; add image: or remove {key}"
+                                 + (" (a map of bounds alone gets cells of its own size)" if key == "resolution"
+                                    else ""), nodes[key])
             return None
         image = self.string(nodes["image"], "image")
         missing = [k for k in ("resolution", "origin") if k not in nodes]

@@ -360,3 +360,15 @@ def test_what_a_pgm_holds_after_its_pixels_is_refused(data: bytes, says: str) ->
 def test_whitespace_or_another_image_after_a_p5s_pixels_is_read(after: bytes) -> None:
     """A line end an editor added; netpbm's several images in one file (the first is the map's)."""
     assert read_pgm(b"P5\n2 1\n255\n\x00\xfe" + after).tolist() == [[0.0, 254.0]]
+
+
+@pytest.mark.parametrize(("line", "key"), [("resolution: abc", "resolution"), ("origin: {x: 1}", "origin"),
+                                           ("resolution: 0.05", "resolution")])
+def test_image_keys_without_an_image_are_refused(tmp_path: Path, line: str, key: str) -> None:
+    """hostile30: resolution and origin were passed over unread without an image ("resolution: abc" was ok)."""
+    from seal_cli.maps.formats.map_server import check_map_file
+
+    path = tmp_path / "m.yaml"
+    path.write_text(f"name: m\nbounds: [0, 0, 10, 10]\nrooms:\n  - {{name: hall, box: [0, 0, 10, 10]}}\n{line}\n")
+    found = [(p.line, p.message) for p in check_map_file(path)]
+    assert found and found[0][0] == 5 and found[0][1].startswith(f"{key} only means something with an image")
