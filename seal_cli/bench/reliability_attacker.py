@@ -32,7 +32,8 @@ __all__ = ["alfred2d_data", "attacker_cases", "chain_library", "hostile14_cases"
            "hostile17_cases", "hostile18_cases", "hostile19_cases", "hostile20_cases", "hostile21_cases",
            "hostile22_cases", "hostile23_cases", "hostile24_cases", "hostile25_cases", "hostile26_cases",
            "hostile27_cases", "hostile28_cases", "hostile29_bag_cases", "hostile29_cases",
-           "hostile29_environment_cases", "hostile30_cases", "hostile30_leftover_cases", "rgba_png", "robot_map",
+           "hostile29_environment_cases", "hostile30_cases", "hostile30_leftover_cases", "hostile30_output_cases",
+           "rgba_png", "robot_map",
            "sparse_pgm", "split_house"]
 
 DIGITS = "1" * 5_000
@@ -305,6 +306,7 @@ def attacker_cases() -> Iterator[Case]:  # noqa: PLR0915 - one list of cases, re
     yield from hostile29_environment_cases()
     yield from hostile30_leftover_cases()
     yield from hostile30_cases()
+    yield from hostile30_output_cases()
 
 
 def hostile14_cases() -> Iterator[Case]:
@@ -2228,3 +2230,96 @@ def hostile30_cases() -> Iterator[Case]:  # noqa: PLR0915 - one list of cases, r
     yield Case("A parse --file of a BOM, CRLF and a line of only a zero-width space", ("parse", "--file", "c.txt"),
                (("c.txt", "\ufeffgo to the kitchen\r\n\u200b\r\nopen the fridge\r\n".encode()),), codes=(0, 1),
                keep=("c.txt",), says=r"c\.txt:2|Go|Open")
+
+
+def hostile30_output_cases() -> Iterator[Case]:  # noqa: PLR0915 - one list of cases, read top to bottom
+    """Round hostile30's third batch, outputs and interrupted writes: an output that is an input through ``..``,
+    ``./``, a link into a folder, a hard link, a shipped map's image reached by an absolute link; names that differ
+    from an input only by case (another file: written); ``plan --pddl`` into the folder of an input named like its
+    files; ``--goals``, ``import-bag -o`` and ``bench tasks --episodes`` past ``ulimit -f`` and stopped by SIGTERM,
+    SIGHUP or SIGINT while writing; bags that are empty, garbage, a FIFO, ``/dev/zero`` by a link, cut short."""
+    from seal_cli.resources import map_path
+
+    loc = ("localize", "--map", "apartment", "--task", "go to the kitchen", "--steps", "2", "--particles", "20")
+    obs = b"- pose: [-6, -3]\n  detections: []\n- pose: [-5.5, -3]\n  detections: []\n"
+    # -- an output that is an input, however it is reached ---------------------------------------------------------
+    yield Case("A localize --goals onto its observations through d/..", (*loc, "--observations", "o.yaml", "--goals",
+                                                                         "d/../o.yaml"),
+               (("o.yaml", obs), ("d", "dir")), codes=(1,), keep=("o.yaml",), says=r"--goals d/\.\./o\.yaml")
+    yield Case("A localize --goals onto its observations through ./", (*loc, "--observations", "o.yaml", "--goals",
+                                                                       "./o.yaml"),
+               (("o.yaml", obs),), codes=(1,), keep=("o.yaml",), says=r"--goals \./o\.yaml")
+    yield Case("A localize --goals onto its trajectory through a link to its folder",
+               (*loc, "--trajectory", "d/t.yaml", "--goals", "l/t.yaml"),
+               (("d/t.yaml", b"poses:\n  - [-6, -3]\n  - [-5.5, -3]\n"), ("l", "link:d")), codes=(1,),
+               keep=("d/t.yaml",), says=r"--goals l/t\.yaml")
+    yield Case("A localize --goals named as its observations but for case", (*loc, "--observations", "o.yaml",
+                                                                             "--goals", "O.yaml"),
+               (("o.yaml", obs),), codes=(0,), keep=("o.yaml",), whole=("O.yaml",), says=r"(?s).")
+    image = str(map_path("apartment").with_suffix(".pgm"))
+    yield Case("A run --png onto a link to the shipped map's image",
+               ("run", "go to the kitchen", "--map", "apartment", "--particles", "20", "--png", "l.png"),
+               (("l.png", f"link:{image}"),), codes=(1,), says=r"--png l\.png would overwrite the input")
+    yield Case("A map --png onto a link to the shipped map's own YAML", ("map", "apartment", "--png", "l.png"),
+               (("l.png", f"link:{map_path('apartment')}"),), codes=(1,), says=r"--png l\.png would overwrite")
+    yield Case("A plan --pddl into the folder of its vocabulary named domain.pddl",
+               ("plan", "stir the cup", "--vocabulary", "d/domain.pddl", "--pddl", "d"),
+               (("d/domain.pddl", b"cup: [mug]\n"),), codes=(1,), keep=("d/domain.pddl",),
+               says=r"--pddl d/domain\.pddl would overwrite")
+    yield Case("A plan --pddl whose problem.pddl is a hard link to its frame file",
+               ("plan", "whisk the cup", "--framelib", "+f.frame", "--pddl", "d"),
+               (("f.frame", b'frame Whisk "whisk" {\n  theme: object\n  do navigate(theme)\n}\n'),
+                ("d/problem.pddl", "hard:f.frame")), codes=(1,), keep=("f.frame", "d/problem.pddl"),
+               says=r"--pddl d/problem\.pddl would overwrite")
+    data = alfred2d_data()
+    yield Case("A bench tasks --episodes onto its trials through d/../d", ("bench", "tasks", "--data", "d",
+                                                                        "--policies", "sefm", "--jobs", "1",
+                                                                        "--particles", "20", "--episodes",
+                                                                        "d/../d/trials_valid_seen.jsonl"),
+               data, codes=(1,), keep=tuple(n for n, _ in data), says=r"--episodes d/\.\./d/trials_valid_seen\.jsonl")
+    # -- interrupted and cut-short writes --------------------------------------------------------------------------
+    yield Case("A localize --goals past ulimit -f of 512 bytes", (*loc, "--observations", "o.yaml", "--goals",
+                                                                  "g.yaml"),
+               (("o.yaml", obs),), codes=(1,), keep=("o.yaml",), absent=("g.yaml",), file_blocks=1,
+               says=r"--goals g\.yaml: File too large|File too large")
+    yield Case("A localize --goals .json past ulimit -f of 512 bytes", (*loc, "--observations", "o.yaml", "--goals",
+                                                                        "g.json"),
+               (("o.yaml", obs),), codes=(1,), keep=("o.yaml",), absent=("g.json",), file_blocks=1,
+               says=r"File too large")
+    tiny = ("bench", "tasks", "--suite", "map", "--map", "studio", "--command", "go to the sofa", "--layouts", "3",
+            "--policies", "oracle,sefm", "--particles", "20", "--episodes", "e.jsonl")
+    yield Case("A bench tasks --episodes past ulimit -f of 512 bytes", (*tiny, "--jobs", "1"), codes=(1,),
+               absent=("e.jsonl",), file_blocks=1, says=r"--episodes e\.jsonl: File too large|File too large",
+               timeout=120)
+    yield Case("A SIGTERM during bench tasks --jobs 2 --episodes", (*tiny, "--jobs", "2"), codes=(143,),
+               absent=("e.jsonl",), signal=(15, 4.0), timeout=120)
+    yield Case("A SIGHUP during localize --goals", ("localize", "--map", "apartment", "--task", "go to the kitchen",
+                                                    "--steps", "400", "--particles", "2000", "--goals", "g.yaml"),
+               codes=(129,), absent=("g.yaml",), signal=(1, 4.0), timeout=60)
+    # -- bags ------------------------------------------------------------------------------------------------------
+    bag = _sample_bag()
+    if bag is None:
+        return
+    yield Case("A import-bag -o onto its bag through d/..", ("import-bag", "run.mcap", "-o", "d/../run.mcap"),
+               (("run.mcap", bag), ("d", "dir")), codes=(1,), keep=("run.mcap",), says=r"--output d/\.\./run\.mcap")
+    yield Case("A import-bag -o past ulimit -f of 512 bytes", ("import-bag", "run.mcap", "-o", "o.yaml"),
+               (("run.mcap", bag),), codes=(1,), keep=("run.mcap",), absent=("o.yaml",), file_blocks=1,
+               says=r"File too large")
+    yield Case("A SIGINT during import-bag", ("import-bag", "run.mcap", "-o", "o.yaml"), (("run.mcap", bag),),
+               codes=(0, 130), keep=("run.mcap",), signal=(2, 1.5))
+    yield Case("A import-bag of an empty .mcap", ("import-bag", "e.mcap", "-o", "o.yaml"), (("e.mcap", b""),),
+               codes=(1,), keep=("e.mcap",), absent=("o.yaml",), says=r"e\.mcap")
+    yield Case("A import-bag of an MCAP cut in half", ("import-bag", "h.mcap", "-o", "o.yaml"),
+               (("h.mcap", bag[:len(bag) // 2]),), codes=(0, 1), keep=("h.mcap",), says=r"h\.mcap|observations")
+    yield Case("A import-bag of a .db3 of garbage", ("import-bag", "g.db3", "-o", "o.yaml"),
+               (("g.db3", b"SQLite format 3\x00" + bytes(range(256)) * 40),), codes=(1,), keep=("g.db3",),
+               absent=("o.yaml",), says=r"g\.db3")
+    yield Case("A import-bag of a ROS 1 .bag cut after its header", ("import-bag", "r.bag", "-o", "o.yaml"),
+               (("r.bag", b"#ROSBAG V2.0\n" + b"\x00" * 64),), codes=(1,), keep=("r.bag",), absent=("o.yaml",),
+               says=r"r\.bag")
+    yield Case("A import-bag of a FIFO named .mcap", ("import-bag", "f.mcap", "-o", "o.yaml"), (("f.mcap", "fifo"),),
+               codes=(1,), absent=("o.yaml",), says=r"f\.mcap", timeout=30)
+    yield Case("A import-bag of a link to /dev/zero named .mcap", ("import-bag", "z.mcap", "-o", "o.yaml"),
+               (("z.mcap", "link:/dev/zero"),), codes=(1,), absent=("o.yaml",), says=r"z\.mcap", timeout=30)
+    yield Case("A localize --bag of an empty .mcap", (*loc, "--bag", "e.mcap"), (("e.mcap", b""),), codes=(1,),
+               keep=("e.mcap",), says=r"e\.mcap")
