@@ -40,6 +40,7 @@ if TYPE_CHECKING:
 
 __all__ = ["LOADER", "MAX_IMAGE_BYTES", "MAX_INPUT_BYTES", "YAML_BREAKS", "Outputs", "atomic_output",
            "atomic_write_text", "clean_up_on_signals", "compose_documents", "compose_yaml", "decode", "interrupted",
+           "is_live_temporary",
            "json_value", "note_interrupts", "open_regular", "read_bytes", "read_json", "read_json_lines", "read_text",
            "read_yaml", "remove_temporaries", "shown_path", "signals_wait", "split_lines", "stdin_hint", "stream_lines",
            "typed", "work_folder", "yaml_problem"]
@@ -598,6 +599,12 @@ _LIVE: set[Path] = set()
 """Our temporaries not yet renamed or removed: removed at exit and on a signal."""
 
 _TEMP = re.compile(r"\.seal(\d+)-[0-9a-f]{8}\.tmp")
+
+
+def is_live_temporary(path: str | Path) -> bool:
+    """Whether ``path`` is the temporary of an output being written (a writer handed it says its failures as the
+    system's errors of it, for the output to name its option)."""
+    return Path(path) in _LIVE
 
 
 def remove_temporaries() -> None:
