@@ -2230,6 +2230,12 @@ def hostile30_cases() -> Iterator[Case]:  # noqa: PLR0915 - one list of cases, r
     yield Case("A parse --file of a BOM, CRLF and a line of only a zero-width space", ("parse", "--file", "c.txt"),
                (("c.txt", "\ufeffgo to the kitchen\r\n\u200b\r\nopen the fridge\r\n".encode()),), codes=(0, 1),
                keep=("c.txt",), says=r"c\.txt:2|Go|Open")
+    # found by hand after the batch's fixes: a FIFO where the scorer goes was "scorer not found"
+    yield Case("A bench parse --scorers whose score_parse.py is a FIFO", ("bench", "parse", "--corpus", "c.jsonl",
+                                                                          "--scorers", "s"),
+               (("c.jsonl", b'{"text": "go to the kitchen", "expect": [{"frame": "Go"}]}\n'),
+                ("s/score_parse.py", "fifo")), codes=(1,), keep=("c.jsonl",),
+               says=r"scorer s/score_parse\.py is a FIFO", timeout=30)
 
 
 def hostile30_output_cases() -> Iterator[Case]:  # noqa: PLR0915 - one list of cases, read top to bottom
