@@ -40,6 +40,7 @@ if TYPE_CHECKING:
 
 __all__ = ["LOADER", "MAX_IMAGE_BYTES", "MAX_INPUT_BYTES", "YAML_BREAKS", "Outputs", "atomic_output",
            "atomic_write_text", "clean_up_on_signals", "compose_documents", "compose_yaml", "decode", "interrupted",
+           "is_live_temporary",
            "json_value", "note_interrupts", "open_regular", "read_bytes", "read_json", "read_json_lines", "read_text",
            "read_yaml", "remove_temporaries", "shown_path", "signals_wait", "split_lines", "stdin_hint", "stream_lines",
            "typed", "work_folder", "yaml_problem"]
@@ -375,8 +376,9 @@ def compose_documents(text: str, file: str, *, single: bool = False) -> list[Any
         documents = [yaml.compose(text, Loader=loader)] if single else list(yaml.compose_all(text, Loader=loader))
     except yaml.YAMLError as exc:
         raise yaml_problem(exc, text, file) from None
+    lines = YAML_BREAKS.split(text) if "!" in text else []  # a tag written in the file is read as YAML reads it
     for root in documents:
-        check_size(root, file, MAX_VALUES)
+        check_size(root, file, MAX_VALUES, lines)
     place_aliases(documents, text, loader)
     if "<<" in text:
         for root in documents:
@@ -401,7 +403,8 @@ def read_yaml(path: str | Path, max_values: int | None = None, what: str = "file
     try:
         if len(text) > limit:  # a value takes at least one character: a shorter file cannot hold more
             count_values(text, loader, str(path), limit, what)
-        check_size(yaml.compose(text, Loader=loader), str(path), limit)  # no alias bomb is expanded
+        check_size(yaml.compose(text, Loader=loader), str(path), limit,  # no alias bomb is expanded
+                   YAML_BREAKS.split(text) if "!" in text else [])
         return yaml.load(text, Loader=loader)  # noqa: S506 (a safe loader)
     except yaml.YAMLError as exc:
         raise yaml_problem(exc, text, str(path)) from None
@@ -437,9 +440,14 @@ def json_value(text: str, path: str | Path, line: int = 1) -> Any:
     import json
 
     try:
-        return check_whole_characters(json.loads(text), text, path, line)
+        return check_whole_characters(json.loads(text, object_pairs_hook=_each_key_once), text, path, line)
     except json.JSONDecodeError:
         raise
+    except _RepeatedKey:
+        at, key = _repeated_key(text)
+        shown = key if len(key) <= 60 else key[:59] + "…"
+        message = (f"this object says the key {shown!r} twice: JSON readers differ on which one counts (Python's "
+                   "takes the last, others the first or refuse), so say it once")
     except RecursionError:
         at = _depth_reached(text, DEEPEST_SHOWN)
         message = f"this value is nested too deeply for seal to read ({DEEPEST_SHOWN} levels deep here, and deeper)"
@@ -452,6 +460,46 @@ def json_value(text: str, path: str | Path, line: int = 1) -> Any:
     shown = text[before + 1:].split("\n", 1)[0]
     raise SealError(message, Where(str(path), line + text.count("\n", 0, at), at - before),
                     source_line=shown if len(shown) <= 200 else None) from None
+
+
+class _RepeatedKey(Exception):
+    """An object of a JSON text says a key twice (found by :func:`_each_key_once`, placed by :func:`_repeated_key`)."""
+
+
+def _each_key_once(pairs: list[tuple[str, Any]]) -> dict[str, Any]:
+    """The object of JSON ``pairs``, as Python's reader makes it, but refusing a key said twice (hostile30: the last
+    was taken silently, ``{"text": "a", "text": "b"}`` scored as "b")."""
+    value = dict(pairs)
+    if len(value) != len(pairs):
+        raise _RepeatedKey
+    return value
+
+
+_JSON_TOKEN = re.compile(r'"(?:[^"\\]|\\.)*"|[{}\[\],:]')
+"""A JSON string, or one of JSON's structural characters (what else a JSON text holds has neither)."""
+
+
+def _repeated_key(text: str) -> tuple[int, str]:
+    """Where the first key said twice in one object of a JSON text is (its second saying), and the key; the text
+    is JSON (Python's reader read it), walked without recursion."""
+    import json
+
+    objects: list[set[str] | None] = []  # the keys of each open object; None for an open array
+    last = ""
+    for token in _JSON_TOKEN.finditer(text):
+        word = token.group()
+        if word[0] == '"':
+            if objects and objects[-1] is not None and last in ("{", ","):
+                key = json.loads(word)
+                if key in objects[-1]:
+                    return token.start(), key
+                objects[-1].add(key)
+        elif word in "{[":
+            objects.append(set() if word == "{" else None)
+        elif word in "}]" and objects:
+            objects.pop()
+        last = word[0]
+    return 0, ""
 
 
 def _depth_reached(text: str, depth: int) -> int:
@@ -551,6 +599,12 @@ _LIVE: set[Path] = set()
 """Our temporaries not yet renamed or removed: removed at exit and on a signal."""
 
 _TEMP = re.compile(r"\.seal(\d+)-[0-9a-f]{8}\.tmp")
+
+
+def is_live_temporary(path: str | Path) -> bool:
+    """Whether ``path`` is the temporary of an output being written (a writer handed it says its failures as the
+    system's errors of it, for the output to name its option)."""
+    return Path(path) in _LIVE
 
 
 def remove_temporaries() -> None:
@@ -1009,12 +1063,25 @@ def _reserve(option: str, target: Path, by_option: bool = True) -> _Output:
             from None
 
 
+_NO_NEW_FILES = frozenset({errno.ENOENT, errno.EACCES, errno.EPERM, errno.EROFS})
+"""What the system says when a folder that exists takes no new file: ``/proc`` says "No such file or directory" (its
+files are the kernel's), ``/sys`` "Permission denied" even to root, a read-only mount EROFS (hostile30: "No such file
+or directory (in folder /proc)" named a folder that exists)."""
+
+
+def _root() -> bool:
+    return hasattr(os, "geteuid") and os.geteuid() == 0
+
+
 def _reason(error: OSError, target: Path, *, in_folder: bool = False) -> str:
     """Why writing ``target`` failed, in words: a folder that does not exist (or was removed while the command ran)
     is named, and with ``in_folder`` the folder of any other failure."""
     folder = target.parent
     if error.errno == errno.ENOENT and not folder.is_dir():
         return f"folder {shown_path(folder)} does not exist"
+    if in_folder and error.errno in _NO_NEW_FILES and folder.is_dir():  # the temporary is the folder's first new file
+        return (f"folder {shown_path(folder)} does not take new files ({error.strerror}"
+                f"{'; seal runs as root here, so it is the file system that refuses' if _root() else ''})")
     return f"{error.strerror}" + (f" (in folder {shown_path(folder)})" if in_folder else "")
 
 

@@ -40,10 +40,17 @@ MAX_VALUES = 1_000_000
 whole anchored value): a file that expands beyond is refused before it is read."""
 
 
-def check_size(root: yaml.Node | None, file: str, limit: int = MAX_VALUES) -> None:
+TAG_SAYS = {CORE + "int": "an integer", CORE + "float": "a number", CORE + "bool": "true or false",
+            CORE + "null": "nothing (null, ~ or no value at all)", CORE + "timestamp": "a date",
+            CORE + "merge": "a merge key (<<)", CORE + "seq": "a list", CORE + "map": "a mapping"}
+"""What each of YAML's own tags says its value is, for a value written with a tag that does not fit it."""
+
+
+def check_size(root: yaml.Node | None, file: str, limit: int = MAX_VALUES, lines: Sequence[str] = ()) -> None:
     """Refuse a composed file whose values, aliases expanded, number more than ``limit``, or that holds a tag of
     none of :data:`READ_TAGS`; linear in the distinct nodes (each anchored node's expanded size is counted once and
-    reused)."""
+    reused). With the file's ``lines`` (split at YAML's line breaks), a tag of YAML's own written in the file is read
+    as YAML defines it (:func:`_written_tag`)."""
     if root is None:
         return
     sizes: dict[int, int] = {}
@@ -63,6 +70,8 @@ def check_size(root: yaml.Node | None, file: str, limit: int = MAX_VALUES) -> No
         if node.tag not in READ_TAGS:
             raise SealError(f"the tag {_tag(node.tag)} asks for a value seal does not read: leave the tag out",
                             Where(file, node.start_mark.line + 1, node.start_mark.column + 1))
+        if lines and _tagged(node, lines):
+            _written_tag(node, file)
         open_.add(id(node))
         stack.append((node, True))
         stack.extend((child, False) for child in _children(node))
@@ -71,6 +80,54 @@ def check_size(root: yaml.Node | None, file: str, limit: int = MAX_VALUES) -> No
         raise SealError(f"this file holds more than {limit:,} values once its aliases (*name) are expanded; "
                         "seal reads at most that many",
                         Where(file, past.start_mark.line + 1, past.start_mark.column + 1))
+
+
+def _tagged(node: yaml.Node, lines: Sequence[str]) -> bool:
+    """Whether the node's tag is written in the file (``!!str 5``, ``&a !!int 7``), not the one YAML gives a plain
+    value: a node starts at its anchor or its tag (the composed node keeps no other trace of it)."""
+    mark = node.start_mark
+    rest = lines[mark.line][mark.column:] if mark.line < len(lines) else ""
+    if rest.startswith("&"):
+        rest = rest.split(None, 1)[1] if len(rest.split(None, 1)) == 2 else ""
+    return rest.startswith("!")
+
+
+def _written_tag(node: yaml.Node, file: str) -> None:
+    """A value tagged with one of YAML's own tags (hostile30), read as YAML defines the tag: ``!!str`` makes a plain
+    value text, as quotes do (``resolution: !!str 0.05`` is the text "0.05", refused where a number goes; it was read
+    as the number); every other tag must fit what it tags (``!!float 1`` is the number 1.0, ``!!int lab``,
+    ``!!bool 0`` or ``!!seq {a: 1}`` are refused at the value: the name was read as "lab", and ``!!bool 0`` was a
+    KeyError traceback)."""
+    tag, says = node.tag, TAG_SAYS.get(node.tag)
+    if tag == CORE + "str" and isinstance(node, yaml.ScalarNode):
+        if not node.style:
+            node.style = "'"  # as if quoted: text, never a number read from it
+        return
+    if says is None or _fits(node):
+        return
+    raise SealError(f"the tag {_tag(tag)} says the value is {says}, but it is {shape(node)}: "
+                    f"leave the tag out, or write {says}",
+                    Where(file, node.start_mark.line + 1, node.start_mark.column + 1))
+
+
+def _fits(node: yaml.Node) -> bool:
+    """Whether a node is what its tag (one of :data:`TAG_SAYS`) says: a list for ``!!seq``, a mapping for ``!!map``,
+    else a value YAML would read as that tag's kind by itself (a float also from an integer, or from what Python
+    reads as one: ``!!float 1e-3``)."""
+    if node.tag == CORE + "seq":
+        return isinstance(node, yaml.SequenceNode)
+    if node.tag == CORE + "map":
+        return isinstance(node, yaml.MappingNode)
+    if not isinstance(node, yaml.ScalarNode):
+        return False
+    plain = yaml.resolver.Resolver().resolve(yaml.ScalarNode, node.value, (True, False))
+    if node.tag == CORE + "float" and plain != CORE + "float":
+        try:
+            float(node.value.replace("_", ""))
+        except ValueError:
+            return plain == CORE + "int"
+        return True
+    return bool(plain == node.tag)
 
 
 def _tag(tag: str) -> str:
@@ -257,7 +314,17 @@ def shape(node: yaml.Node) -> str:
         return "a list"
     if is_null(node):
         return "nothing"
+    if node.tag == CORE + "str" and getattr(node, "style", None) and _number_text(node.value):
+        return f"the text {clipped(repr(node.value))} (a number is written without quotes or !!str)"
     return clipped(repr(node.value))
+
+
+def _number_text(text: str) -> bool:
+    try:
+        float(text)
+    except ValueError:
+        return False
+    return True
 
 
 def clipped(text: str, most: int = 60) -> str:

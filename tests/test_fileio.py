@@ -694,3 +694,44 @@ def test_an_input_folders_files_are_inputs_too(tmp_path: Path) -> None:
         outputs["--output"].write_text("b: 2\n", encoding="utf-8")
     assert (bag / "o.yaml").read_text(encoding="utf-8") == "b: 2\n"
     assert (bag / "metadata.yaml").read_text(encoding="utf-8") == "a: 1\n"
+
+
+@pytest.mark.parametrize(("text", "where", "key"), [
+    ('{"text": "a", "text": "b"}', (3, 15), "text"),
+    ('{"a": {"b": 1},\n "c": [{"d": 1}, {"d": 2, "e": {"x\\"{": 1, "x\\"{": 2}}]}', (4, 44), 'x"{'),
+    ('[{"k": 1}, {"k": 1}, {"s": "{\\"k\\": 1, ", "k": 2, "k": 3}]', (3, 51), "k"),
+])
+def test_a_json_key_said_twice_in_one_object_is_refused_at_the_second(text: str, where: tuple[int, int],
+                                                                       key: str) -> None:
+    """Python's reader took the last silently (hostile30); keys in other objects, or inside strings, do not count."""
+    with pytest.raises(SealError) as caught:
+        json_value(text, "c.jsonl", line=3)
+    assert (caught.value.where.line, caught.value.where.column) == where
+    assert f"this object says the key {key!r} twice" in caught.value.message
+
+
+def test_json_keys_said_once_in_each_object_are_read(tmp_path: Path) -> None:
+    path = tmp_path / "k.json"
+    path.write_text('{"a": {"b": 1}, "c": {"b": 2}, "d": [{"b": 3}, {"b": 4}]}', encoding="utf-8")
+    assert read_json(path) == {"a": {"b": 1}, "c": {"b": 2}, "d": [{"b": 3}, {"b": 4}]}
+
+
+@pytest.mark.skipif(not Path("/proc/self").is_dir(), reason="needs Linux's /proc")
+def test_an_output_into_a_folder_that_takes_no_new_file_says_so_of_the_folder() -> None:
+    """``/proc`` says "No such file or directory" even to root: it named a folder that exists (hostile30)."""
+    from seal_cli import fileio
+
+    with pytest.raises(SealError, match=r"cannot write --png /proc/o\.png: folder /proc does not take new files "
+                                        r"\(No such file or directory"), fileio.Outputs({"--png": Path("/proc/o.png")}):
+        pass
+
+
+def test_a_read_only_folder_is_said_so(tmp_path: Path) -> None:
+    import errno
+
+    from seal_cli import fileio
+
+    reason = fileio._reason(OSError(errno.EROFS, "Read-only file system"), tmp_path / "o.png", in_folder=True)
+    assert reason.startswith(f"folder {tmp_path} does not take new files (Read-only file system")
+    gone = fileio._reason(OSError(errno.ENOENT, "No such file or directory"), tmp_path / "d" / "o.png", in_folder=True)
+    assert gone == f"folder {tmp_path / 'd'} does not exist"

@@ -166,3 +166,41 @@ def test_a_tag_seal_does_not_read_is_refused_at_its_node(text: str, where: tuple
 def test_the_tags_yaml_gives_plain_values_are_read() -> None:
     text = "a: [1, 2.5, true, ~, x, 2001-12-14, !!str 10, !!int 3]\nb: &b {c: 1}\nd:\n  <<: *b\n"
     check_size(yaml.compose(text, Loader=LOADER), "f.yaml")
+
+
+def _checked(text: str) -> yaml.Node:
+    root = yaml.compose(text, Loader=LOADER)
+    check_size(root, "f.yaml", lines=text.split("\n"))
+    return root
+
+
+@pytest.mark.parametrize(("text", "where", "says"), [
+    ("name: !!int lab\n", (1, 7), "the tag !!int says the value is an integer, but it is 'lab'"),
+    ("negate: !!bool 0\n", (1, 9), "the tag !!bool says the value is true or false, but it is '0'"),
+    ("a: [1, &x !!float abc]\n", (1, 8), "the tag !!float says the value is a number, but it is 'abc'"),
+    ("a: !!null b\n", (1, 4), "the tag !!null says"),
+    ("a: !!seq {b: 1}\n", (1, 4), "the tag !!seq says the value is a list, but it is a mapping"),
+    ("a: !!map\n  - b\n", (1, 4), "the tag !!map says the value is a mapping, but it is a list"),
+    ("a: !!int [1]\n", (1, 4), "the tag !!int says the value is an integer, but it is a list"),
+])
+def test_a_core_tag_that_does_not_fit_its_value_is_refused_at_it(text: str, where: tuple[int, int],
+                                                                 says: str) -> None:
+    """hostile30: ``!!int lab`` was read as the name "lab", and ``!!bool 0`` was a KeyError traceback."""
+    with pytest.raises(SealError) as caught:
+        _checked(text)
+    assert (caught.value.where.line, caught.value.where.column) == where
+    assert says in caught.value.message
+
+
+def test_a_core_tag_that_fits_is_read_as_yaml_defines_it() -> None:
+    root = _checked("a: [!!float 1, !!float 1e-3, !!int 0x10, !!bool yes, !!null ~, !!str 0.05, !!seq [1], "
+                    "!!timestamp 2001-12-14]\n!!str b: !!map {c: 1}\nd: !!str 5\n")
+    items = root.value[0][1].value
+    assert items[5].tag == "tag:yaml.org,2002:str" and items[5].style  # read as text, as if quoted
+    assert "the text '0.05'" in shape(items[5]) and shape(root.value[2][1]).startswith("the text '5'")
+
+
+def test_a_tag_is_known_as_written_only_where_the_file_writes_it() -> None:
+    """A plain value that YAML reads as text (``x``), a quoted number, an anchor without a tag: no tag written."""
+    root = _checked("a: &n 5\nb: x\nc: '7'\nd: !!str\n")
+    assert not root.value[1][1].style and shape(root.value[2][1]).startswith("the text '7'")

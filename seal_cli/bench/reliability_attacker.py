@@ -32,7 +32,8 @@ __all__ = ["alfred2d_data", "attacker_cases", "chain_library", "hostile14_cases"
            "hostile17_cases", "hostile18_cases", "hostile19_cases", "hostile20_cases", "hostile21_cases",
            "hostile22_cases", "hostile23_cases", "hostile24_cases", "hostile25_cases", "hostile26_cases",
            "hostile27_cases", "hostile28_cases", "hostile29_bag_cases", "hostile29_cases",
-           "hostile29_environment_cases", "rgba_png", "robot_map",
+           "hostile29_environment_cases", "hostile30_cases", "hostile30_leftover_cases", "hostile30_output_cases",
+           "rgba_png", "robot_map",
            "sparse_pgm", "split_house"]
 
 DIGITS = "1" * 5_000
@@ -303,6 +304,9 @@ def attacker_cases() -> Iterator[Case]:  # noqa: PLR0915 - one list of cases, re
     yield from hostile29_cases()
     yield from hostile29_bag_cases()
     yield from hostile29_environment_cases()
+    yield from hostile30_leftover_cases()
+    yield from hostile30_cases()
+    yield from hostile30_output_cases()
 
 
 def hostile14_cases() -> Iterator[Case]:
@@ -766,7 +770,7 @@ def hostile19_cases() -> Iterator[Case]:  # noqa: PLR0915 - one list of cases, r
                           ("categories alone", b"categories:\n  utensil: [spoon]\n")):
         yield Case(f"A plan --framelib of {name}", ("plan", "stir the cup", "--framelib", "f.yaml"),
                    (("f.yaml", content),), codes=(1,), keep=("f.yaml",),
-                   says=r"f\.yaml: this frame library holds no frames")
+                   says=r"f\.yaml: this (frame library holds no frames|file holds nothing)")  # hostile30: the file
     image = b"P5\n2 2\n255\n" + bytes([254] * 4)
     for value, said in (("1e300", r"m\.yaml:2:13: resolution 1e\+300 m of an image of 2×2 pixels"),
                         ("1e-300", r"m\.yaml:2:13: resolution must be a number of metres per pixel of at least")):
@@ -1942,3 +1946,390 @@ def hostile29_environment_cases() -> Iterator[Case]:
                                                           "--command", "go to the sofa", "--layouts", "1",
                                                           "--policies", "oracle", "--particles", "20", "--jobs", "64"),
                codes=(0,), says=r"(?s).", timeout=120)
+
+
+def _column_of(data: bytes, key: bytes, nth: int = 2) -> int:
+    """The 1-based column of the ``nth`` JSON key ``key`` (with its quotes) in ``data``'s line holding it."""
+    needle, at = b'"' + key + b'"', -1
+    for _ in range(nth):
+        at = data.index(needle, at + 1)
+    return at - data.rfind(b"\n", 0, at)
+
+
+def hostile30_leftover_cases() -> Iterator[Case]:  # noqa: PLR0915 - one list of cases, read top to bottom
+    """Round hostile30's first batch, what hostile29 noticed and left: YAML's own tags (``!!str`` on a number where a
+    number goes was read as the number, ``!!int`` on a name as the name); JSON objects with a key twice (the last
+    was taken, as Python's reader takes it); a P5 image with bytes after its pixels (read, the rest passed over) or
+    too few; a question given as ``--done``; a benchmark's output into a folder root cannot write (``/proc``,
+    ``/sys``: the only ones a root-run bench has)."""
+    (_, head), (_, image) = robot_map()
+    def tagged(name: str, old: bytes, new: bytes, codes: tuple[int, ...], says: str) -> Case:
+        assert old in head, f"the researcher's map changed: update the case {name!r}"
+        return Case(f"A validate of a ROS map {name}", ("validate", "m.yaml"),
+                    (("m.yaml", head.replace(old, new)), ("map.pgm", image)), codes=codes, keep=("m.yaml", "map.pgm"),
+                    says=says)
+    # -- YAML's own tags: each read as YAML defines it -----------------------------------------------------------------
+    yield tagged("whose resolution is tagged !!str", b"resolution: 0.050000", b"resolution: !!str 0.050000", (1,),
+                 r"m\.yaml:3:13: .*resolution")
+    yield tagged("whose name is tagged !!int", b"name: lab", b"name: !!int lab", (1,), r"m\.yaml:9:7: .*!!int")
+    yield tagged("whose negate is tagged !!bool on a 0", b"negate: 0", b"negate: !!bool 0", (1,),
+                 r"m\.yaml:5:9: .*!!bool")
+    yield tagged("whose origin is tagged !!float on an integer", b"origin: [-5.000000", b"origin: [!!float -5", (0,),
+                 r"ok: ")
+    yield tagged("whose name is tagged !!str on a number", b"name: lab", b"name: !!str 5", (0,), r"ok: ")
+    yield tagged("whose rooms are tagged !!map on a list", b"rooms:\n", b"rooms: !!map\n", (1,),
+                 r"m\.yaml:10:8: .*!!map")
+    yield tagged("whose robot is tagged !!seq on a mapping", b"robot: {pose", b"robot: !!seq {pose", (1,),
+                 r"m\.yaml:\d+:8: .*!!seq")
+    yield tagged("whose place is tagged !!null on a name", b"table_1, class", b"!!null table_1, class", (1,),
+                 r"m\.yaml:\d+:\d+: .*!!null")
+    yield tagged("whose key is tagged !!str", b"resolution: 0.05", b"!!str resolution: 0.05", (0,), r"ok: ")
+    yield Case("A localize whose observation's pose is tagged !!str",
+               ("localize", "--map", "apartment", "--task", "go to the kitchen", "--steps", "1", "--particles", "20",
+                "--observations", "o.yaml"), (("o.yaml", b"- pose: [!!str -6, -3]\n  detections: []\n"),), codes=(1,),
+               keep=("o.yaml",), says=r"o\.yaml:1:10: ")
+    # -- JSON objects with a key twice: refused at the second --------------------------------------------------------
+    line = b'{"text": "go to the kitchen", "text": "go to the bed", "expect": [{"frame": "Go", "elements": ' \
+           b'{"goal": "kitchen"}}]}\n'
+    yield Case("A bench parse --corpus whose line says text twice", ("bench", "parse", "--corpus", "c.jsonl"),
+               (("c.jsonl", line),), codes=(1,), keep=("c.jsonl",),
+               says=rf"c\.jsonl:1:{_column_of(line, b'text')}: .*'text'")
+    nested = b'{"text": "go to the kitchen", "expect": [{"frame": "Go", "elements": {"goal": "kitchen", "goal": ' \
+             b'"bed"}}]}\n'
+    yield Case("A bench parse --corpus whose element says goal twice", ("bench", "parse", "--corpus", "c.jsonl"),
+               (("c.jsonl", b"\n" + nested),), codes=(1,), keep=("c.jsonl",),
+               says=rf"c\.jsonl:2:{_column_of(nested, b'goal')}: .*'goal'")
+    table = "task_type\tobject\treceptacle\tmrecep\tsliced\tgoal_sentence\n"
+    constants = b'{\n  "OBJECTS": ["Apple", "Fridge"],\n  "OBJECTS": ["Apple"]\n}\n'
+    yield Case("A bench parse --constants that says OBJECTS twice",
+               ("bench", "parse", "--corpus", "g.tsv", "--constants", "k.json"),
+               (("g.tsv", (table + "pick_and_place_simple\tApple\tFridge\t\t0\tput an apple in the fridge\n").encode()),
+                ("k.json", constants)), codes=(1,), keep=("g.tsv", "k.json"), says=r"k\.json:3:3: .*'OBJECTS'")
+    tasks = ("bench", "tasks", "--data", "d", "--policies", "sefm", "--jobs", "1", "--particles", "20")
+    data = dict(alfred2d_data())
+    plans = data["d/floorplans.json"].replace(b'"scene_type": "kitchen"',
+                                              b'"scene_type": "kitchen", "scene_type": "bathroom"', 1)
+    yield Case("A bench tasks on ALFRED-2D floor plans that say scene_type twice", tasks,
+               tuple({**data, "d/floorplans.json": plans}.items()), codes=(1,), keep=tuple(data),
+               says=rf"d/floorplans\.json:1:{_column_of(plans, b'scene_type')}: .*'scene_type'", timeout=120)
+    trial = data["d/trials_valid_seen.jsonl"].replace(b'"split": "valid_seen"',
+                                                      b'"split": "valid_seen", "split": "train"')
+    yield Case("A bench tasks on an ALFRED-2D trial that says split twice", tasks,
+               tuple({**data, "d/trials_valid_seen.jsonl": trial}.items()), codes=(1,), keep=tuple(data),
+               says=rf"d/trials_valid_seen\.jsonl:1:{_column_of(trial, b'split')}: .*'split'", timeout=120)
+    yield Case("A validate of a map written as JSON that says name twice", ("validate", "m.json"),
+               (("m.json", b'{"name": "a", "name": "b", "bounds": [0, 0, 10, 10],\n "rooms": [{"name": "hall", '
+                           b'"box": [0, 0, 10, 10]}]}\n'),), codes=(1,), keep=("m.json",),
+               says=r"m\.json:1:15: .*'name'")
+    # -- a P5 image with more bytes than its pixels, or fewer ----------------------------------------------------------
+    def pgm(name: str, data: bytes, codes: tuple[int, ...], says: str) -> Case:
+        return Case(f"A validate of a ROS map whose PGM {name}", ("validate", "m.yaml"),
+                    (("m.yaml", head), ("map.pgm", data)), codes=codes, keep=("m.yaml", "map.pgm"), says=says)
+    yield pgm("has bytes after its pixels", image + b"GARBAGE" * 10, (1,), r"m\.yaml:1:8: .*70 bytes after")
+    yield pgm("has its pixels twice (16-bit saved under a maximum of 255)", image + image[15:], (1,),
+              r"m\.yaml:1:8: .*after")
+    yield pgm("ends with a newline after its pixels", image + b"\n", (0,), r"ok: ")
+    yield pgm("holds a second image after the first (netpbm's several images)", image + image, (0,), r"ok: ")
+    yield pgm("is one byte short", image[:-1], (1,), r"m\.yaml:1:8: .*truncated")
+    text = b"P2\n200 200\n255\n" + b" ".join(b"%d" % v for v in image[15:]) + b"\n"
+    yield pgm("(text) has values after its pixels", text + b"7 7\n", (1,), r"m\.yaml:1:8: .*2 values after")
+    yield pgm("(text) ends with blank lines after its pixels", text + b"  \n\n\t\n", (0,), r"ok: ")
+    # -- a question given as --done: the question answered -------------------------------------------------------------
+    yield Case("A plan whose --done is a question (where is the cup?)",
+               ("plan", "bring me the cup", "--map", "apartment", "--done", "where is the cup?"), codes=(0,),
+               says=r"found\(cup\)")
+    yield Case("A run whose --done is a question (how many cups are there?)",
+               ("run", "go to the sofa", "--map", "studio", "--particles", "20", "--done", "how many cups are there?"),
+               codes=(0,), says=r"done: Go")
+    # -- a benchmark's output where root cannot write ----------------------------------------------------------------
+    tiny = ("bench", "tasks", "--suite", "map", "--map", "studio", "--command", "go to the sofa", "--layouts", "1",
+            "--policies", "oracle", "--particles", "20", "--jobs", "1", "--episodes")
+    yield Case("A bench tasks --episodes into /proc", (*tiny, "/proc/e.jsonl"), codes=(1,),
+               says=r"--episodes /proc/e\.jsonl: folder /proc does not take new files")
+    yield Case("A bench tasks --episodes into /sys", (*tiny, "/sys/e.jsonl"), codes=(1,),
+               says=r"--episodes /sys/e\.jsonl: folder /sys does not take new files")
+    yield Case("A bench tasks --episodes into /sys/kernel", (*tiny, "/sys/kernel/e.jsonl"), codes=(1,),
+               says=r"--episodes /sys/kernel/e\.jsonl: folder /sys/kernel does not take new files")
+    yield Case("A run --png into /proc/self", ("run", "go to the sofa", "--map", "studio", "--particles", "20",
+                                               "--png", "/proc/self/o.png"), codes=(1,),
+               says=r"--png /proc/self/o\.png: folder /proc/self does not take new files")
+
+
+def _png(width: int, height: int, depth: int = 8, colour: int = 0, rows: bytes | None = None,
+         crc: bool = True) -> bytes:
+    """A PNG of ``width`` × ``height`` (bit ``depth``, ``colour`` type), its pixel rows ``rows`` (default: all 0xfe,
+    each row with its filter byte), with right or wrong CRCs."""
+    import struct
+    import zlib
+
+    def chunk(kind: bytes, body: bytes) -> bytes:
+        check = zlib.crc32(kind + body) if crc else 0
+        return struct.pack(">I", len(body)) + kind + body + struct.pack(">I", check)
+
+    channels = {0: 1, 2: 3, 3: 1, 4: 2, 6: 4}[colour]
+    row = b"\x00" + b"\xfe" * (width * channels * depth // 8)
+    body = zlib.compress(rows if rows is not None else row * height)
+    palette = chunk(b"PLTE", b"\xfe\xfe\xfe\x00\x00\x00") if colour == 3 else b""
+    return (b"\x89PNG\r\n\x1a\n" + chunk(b"IHDR", struct.pack(">IIBBBBB", width, height, depth, colour, 0, 0, 0))
+            + palette + chunk(b"IDAT", body) + chunk(b"IEND", b""))
+
+
+def hostile30_cases() -> Iterator[Case]:  # noqa: PLR0915 - one list of cases, read top to bottom
+    """Round hostile30's second batch, every input kind: maps (keys passed over without an image, names that differ
+    only by case or by Unicode's composition, names holding a NUL or an escape through YAML's escapes, a map of only
+    a BOM or of only comments), map images (PNGs cut short, with a wrong CRC, 16-bit, with a palette, a GIF named
+    .png, ``/proc/self/mem``), frame libraries (a folder holding a FIFO, a dangling link or a loop; a frame file of
+    only a BOM; a frame name with a zero-width space; an unclosed string at the end), vocabularies, observations and
+    trajectories (empty, CR-only, nested deep), command texts (zero-width, fullwidth, combining, tag characters,
+    variation selectors, an ideographic space alone, a line separator), ``seal validate`` given one file twice."""
+    small = b"name: m\nbounds: [0, 0, 10, 10]\nrooms:\n  - {name: kitchen, box: [0, 0, 5, 10]}\n" \
+            b"  - {name: hall, box: [5, 0, 10, 10]}\n"
+    def map_case(name: str, data: bytes, codes: tuple[int, ...], says: str,
+                 argv: tuple[str, ...] = ("validate", "m.yaml"), *more: tuple[str, bytes | str]) -> Case:
+        return Case(f"A {argv[0]} of a map {name}", argv, (("m.yaml", data), *more), codes=codes,
+                    keep=("m.yaml", *(n for n, c in more if isinstance(c, bytes))), says=says)
+    # -- maps ----------------------------------------------------------------------------------------------------------
+    yield map_case("whose resolution is a word and has no image", small + b"resolution: abc\n", (1,),
+                   r"m\.yaml:6:\d+: .*resolution")
+    yield map_case("whose origin is a mapping and has no image", small + b"origin: {x: 1}\n", (1,),
+                   r"m\.yaml:6:\d+: .*origin")
+    yield map_case("whose rooms differ only by case", small.replace(b"name: hall", b"name: Kitchen"), (1,),
+                   r"m\.yaml:5:\d+: .*[Kk]itchen")
+    yield map_case("whose rooms differ only by Unicode's composition", small.replace(b"kitchen", "café".encode())
+                   .replace(b"name: hall", "name: cafe\u0301".encode()), (1,), r"m\.yaml:5:\d+: .*caf")
+    yield map_case("whose room's name holds a NUL through a YAML escape",
+                   small.replace(b"name: hall", b'name: "ha\\0ll"'), (1,), r"m\.yaml:5:\d+: ")
+    yield map_case("whose place's name holds an escape sequence through a YAML escape",
+                   small + b'places:\n  - {name: "sink\\e[31m_1", class: sink, at: [1, 1]}\n', (1,),
+                   r"m\.yaml:7:\d+: ")
+    yield map_case("whose class holds a zero-width space", small + "places:\n  - {name: sink_1, class: \"si\u200bnk\","
+                   " at: [1, 1]}\n".encode(), (1,), r"m\.yaml:7:\d+: ")
+    yield map_case("of only a BOM", b"\xef\xbb\xbf", (1,), r"m\.yaml: ")
+    yield map_case("of only comments and CRLF", b"# a map\r\n# more\r\n", (1,), r"m\.yaml: ")
+    yield Case("A validate of a map of one flow line of 2 MB, its 60,000 rooms one over another",
+               ("validate", "m.yaml"),
+               (("m.yaml", b"{name: m, bounds: [0, 0, 10, 10], rooms: [" + b", ".join(
+                   b"{name: r%d, box: [0, 0, 1, 1]}" % i for i in range(60_000)) + b"]}\n"),), codes=(1,),
+               keep=("m.yaml",), says=r"m\.yaml:1:\d+: ", timeout=180)
+    yield map_case("whose robot's pose is a string of digits", small + b"robot: {pose: '1 2 0'}\n", (1,),
+                   r"m\.yaml:6:\d+: .*pose")
+    yield map_case("whose bounds are nested 50,000 deep", small.replace(b"bounds: [0, 0, 10, 10]",
+                                                                         b"bounds: " + b"[" * 50_000 + b"]" * 50_000),
+                   (1,), r"m\.yaml:2:\d+: ")
+    # -- map images ----------------------------------------------------------------------------------------------------
+    (_, head), (_, pgm) = robot_map()
+    png_head = head.replace(b"image: map.pgm", b"image: map.png")
+    def image_case(name: str, data: bytes, codes: tuple[int, ...], says: str) -> Case:
+        return Case(f"A validate of a ROS map whose image {name}", ("validate", "m.yaml"),
+                    (("m.yaml", png_head), ("map.png", data)), codes=codes, keep=("m.yaml", "map.png"), says=says)
+    good = _png(200, 200)
+    yield image_case("is a PNG cut short in its pixels", good[:60], (1,), r"m\.yaml:1:8: ")
+    yield image_case("is a PNG whose CRCs are wrong", _png(200, 200, crc=False), (1,), r"m\.yaml:1:8: ")
+    yield image_case("is a 16-bit grey PNG", _png(200, 200, depth=16), (0,), r"ok: ")
+    yield image_case("is a PNG with a palette", _png(200, 200, colour=3, rows=(b"\x00" + b"\x00" * 200) * 200), (0,),
+                     r"ok: ")
+    yield image_case("is a PNG of width 0", _png(0, 200), (1,), r"m\.yaml:1:8: ")
+    yield image_case("is a GIF named .png", b"GIF89a\x01\x00\x01\x00\x00\x00\x00;", (1,), r"m\.yaml:1:8: ")
+    yield image_case("is a PNG whose pixels are 10 MB of zeros once decompressed", _png(
+        200, 200, rows=b"\x00" * 10_000_000), (1,), r"m\.yaml")
+    yield Case("A validate of a ROS map whose image is /proc/self/mem", ("validate", "m.yaml"),
+               (("m.yaml", head.replace(b"image: map.pgm", b"image: /proc/self/mem")),), codes=(1,), keep=("m.yaml",),
+               says=r"m\.yaml:1:8: ")
+    yield Case("A validate of a ROS map whose image is /dev/stdin, stdin closed", ("validate", "m.yaml"),
+               (("m.yaml", head.replace(b"image: map.pgm", b"image: /dev/stdin")),), codes=(1,), keep=("m.yaml",),
+               stream="closed-stdin", says=r"m\.yaml:1:8: ")
+    yield Case("A validate of a ROS map whose PGM header has a comment with a NUL and Latin-1",
+               ("validate", "m.yaml"),
+               (("m.yaml", head), ("map.pgm", pgm.replace(b"P5\n", b"P5\n# caf\xe9 \x00\n", 1))), codes=(0,),
+               keep=("m.yaml", "map.pgm"), says=r"ok: ")
+    # -- frame libraries -----------------------------------------------------------------------------------------------
+    whisk = b'frame Whisk "whisk" {\n  theme: object\n  do navigate(theme)\n}\n'
+    lib = ("plan", "whisk the cup", "--framelib", "+d")
+    yield Case("A plan --framelib of a folder holding a FIFO named .frame", lib,
+               (("d/a.frame", whisk), ("d/b.frame", "fifo")), codes=(1,), keep=("d/a.frame",), says=r"d/b\.frame",
+               timeout=30)
+    yield Case("A plan --framelib of a folder holding a dangling link", lib,
+               (("d/a.frame", whisk), ("d/b.yaml", "link:nowhere.yaml")), codes=(1,), keep=("d/a.frame",),
+               says=r"d/b\.yaml")
+    yield Case("A plan --framelib of a folder holding a link to itself", lib,
+               (("d/a.frame", whisk), ("d/b.frame", "link:b.frame")), codes=(1,), keep=("d/a.frame",),
+               says=r"d/b\.frame")
+    yield Case("A plan --framelib of a folder holding a link to the folder", lib,
+               (("d/a.frame", whisk), ("d/e", "link:.")), codes=(0,), keep=("d/a.frame",), says=r"Whisk")
+    yield Case("A plan --framelib of a frame file of only a BOM", ("plan", "go to the kitchen", "--framelib",
+                                                                  "+f.frame"),
+               (("f.frame", b"\xef\xbb\xbf"),), codes=(0, 1), keep=("f.frame",), says=r"f\.frame|Go")
+    yield Case("A validate of a frame whose name holds a zero-width space", ("validate", "f.frame"),
+               (("f.frame", whisk.replace(b"frame Whisk", "frame Wh\u200bisk".encode())),), codes=(1,),
+               keep=("f.frame",), says=r"f\.frame:1:\d+: ")
+    yield Case("A validate of a frame file ending inside a string", ("validate", "f.frame"),
+               (("f.frame", b'frame Whisk "whisk'),), codes=(1,), keep=("f.frame",), says=r"f\.frame:1:\d+: ")
+    yield Case("A plan on a frame file with a NUL in a comment", ("plan", "whisk the cup", "--framelib", "+f.frame"),
+               (("f.frame", b"// a \x00 comment\n" + whisk),), codes=(0,), keep=("f.frame",), says=r"Whisk")
+    yield Case("A plan on a YAML frame whose unit holds a line separator", ("plan", "whisk the cup", "--framelib",
+                                                                             "+f.yaml"),
+               (("f.yaml", b'frames:\n  - frame: Whisk\n    lexical_units: ["whisk\\L"]\n    elements:\n'
+                           b"      theme: {type: object}\n    actions: [navigate(theme)]\n"),), codes=(0,),
+               keep=("f.yaml",), says=r"Whisk")
+    yield Case("A validate of the same frame file given twice", ("validate", "f.frame", "./f.frame"),
+               (("f.frame", whisk),), codes=(0, 1), keep=("f.frame",), says=r"(?s)f\.frame")
+    yield Case("A validate of a frame file and a link to it", ("validate", "f.frame", "l.frame"),
+               (("f.frame", whisk), ("l.frame", "link:f.frame")), codes=(0, 1), keep=("f.frame",),
+               says=r"(?s)\.frame")
+    # -- vocabularies, observations, trajectories ----------------------------------------------------------------------
+    loc = ("localize", "--map", "apartment", "--task", "go to the kitchen", "--steps", "1", "--particles", "20")
+    yield Case("A parse --vocabulary of only a BOM", ("parse", "--vocabulary", "v.yaml", "stir the cup"),
+               (("v.yaml", b"\xef\xbb\xbf"),), codes=(0, 1), keep=("v.yaml",), says=r"v\.yaml|Stir|stir")
+    yield Case("A parse --vocabulary nested 50,000 deep", ("parse", "--vocabulary", "v.yaml", "stir the cup"),
+               (("v.yaml", b"cup: " + b"[" * 50_000 + b"]" * 50_000 + b"\n"),), codes=(1,), keep=("v.yaml",),
+               says=r"v\.yaml:1:\d+: ")
+    yield Case("A localize --observations of CR-only lines", (*loc, "--observations", "o.yaml"),
+               (("o.yaml", b"- pose: [-6, -3]\r  detections: []\r- pose: [-6, -3]\r  detections: []\r"),),
+               codes=(0,), keep=("o.yaml",), says=r"(?s).")
+    yield Case("A localize --observations nested 50,000 deep", (*loc, "--observations", "o.yaml"),
+               (("o.yaml", b"- pose: " + b"[" * 50_000 + b"]" * 50_000 + b"\n"),), codes=(1,), keep=("o.yaml",),
+               says=r"o\.yaml:1:\d+: ")
+    yield Case("A localize --trajectory of only a BOM and CRLF", (*loc, "--trajectory", "t.yaml"),
+               (("t.yaml", b"\xef\xbb\xbf\r\n"),), codes=(1,), keep=("t.yaml",), says=r"t\.yaml")
+    yield Case("A localize --observations whose detection's class holds a NUL", (*loc, "--observations", "o.yaml"),
+               (("o.yaml", b'- pose: [-6, -3]\n  detections: [{class: "cu\\0p", at: [-5, -3]}]\n'),), codes=(1,),
+               keep=("o.yaml",), says=r"o\.yaml:2:\d+: ")
+    yield Case("A localize --labels of a mapping with a key twice", ("localize", "--map", "apartment", "--bag",
+                                                                     "x.mcap", "--labels", "l.yaml", "--task",
+                                                                     "go to the kitchen"),
+               (("l.yaml", b"1: cup\n1: spoon\n"), ("x.mcap", b"\x89MCAP0\r\n")), codes=(1,), keep=("l.yaml",),
+               says=r"l\.yaml:2:1: |x\.mcap")
+    # -- command texts -------------------------------------------------------------------------------------------------
+    run = ("run", "--map", "studio", "--particles", "20")
+    def said(name: str, text: str, codes: tuple[int, ...], says: str, argv: tuple[str, ...] = run) -> Case:
+        return Case(f"A {argv[0]} of a command {name}", (argv[0], text, *argv[1:]), codes=codes, says=says)
+    yield said("with a zero-width space inside a word", "go to the so\u200bfa", (0, 1), r"column \d+|done: Go")
+    yield said("with a zero-width joiner inside a word", "go to the so\u200dfa", (0, 1), r"column \d+|done: Go")
+    yield said("in fullwidth letters", "ｇｏ ｔｏ ｔｈｅ ｓｏｆａ", (0, 1), r"column \d+|done: Go")
+    yield said("whose every letter has a combining mark", "".join(c + "\u0308" if c.isalpha() else c
+                                                                 for c in "go to the sofa"), (1,), r"column \d+")
+    yield said("of Unicode tag characters", "go to the sofa\U000e0067\U000e006f", (0, 1), r"column \d+|done: Go")
+    yield said("with a variation selector", "go to the sofa\ufe0f", (0, 1), r"column \d+|done: Go")
+    yield said("of an ideographic space alone", "\u3000", (1, 2), r"empty|command|nothing")
+    yield said("holding a line separator", "go to the sofa\u2028and open the fridge", (0, 1),
+               r"column \d+|done: ")
+    yield said("with a right-to-left mark between words", "go to\u200f the sofa", (0, 1), r"column \d+|done: Go")
+    yield said("with a BOM inside", "go to the\ufeff sofa", (0, 1), r"column \d+|done: Go")
+    yield said("of a Hangul filler", "go to the \u3164", (1,), r"column \d+")
+    yield said("of emoji with skin tones and joiners", "go to the \U0001f469\U0001f3fd\u200d\U0001f373", (1,),
+               r"column \d+")
+    yield said("with a dotted capital I", "GO TO THE SOFA \u0130", (0, 1), r"column \d+|done: Go")
+    yield Case("A plan --holding of a zero-width space", ("plan", "put it on the table", "--map", "apartment",
+                                                          "--holding", "\u200b"), codes=(1,), says=r"--holding")
+    yield Case("A plan --holding with a right-to-left override", ("plan", "put it on the table", "--map", "apartment",
+                                                                  "--holding", "cu\u202ep"), codes=(1,),
+               says=r"--holding")
+    yield Case("A localize --task of a zero-width joiner alone", ("localize", "--map", "apartment", "--task",
+                                                                  "\u200d", "--steps", "1", "--particles", "20"),
+               codes=(1, 2), says=r"--task|empty|command")
+    yield Case("A parse --file of a BOM, CRLF and a line of only a zero-width space", ("parse", "--file", "c.txt"),
+               (("c.txt", "\ufeffgo to the kitchen\r\n\u200b\r\nopen the fridge\r\n".encode()),), codes=(0, 1),
+               keep=("c.txt",), says=r"c\.txt:2|Go|Open")
+    # found by hand after the batch's fixes: a FIFO where the scorer goes was "scorer not found"
+    yield Case("A bench parse --scorers whose score_parse.py is a FIFO", ("bench", "parse", "--corpus", "c.jsonl",
+                                                                          "--scorers", "s"),
+               (("c.jsonl", b'{"text": "go to the kitchen", "expect": [{"frame": "Go"}]}\n'),
+                ("s/score_parse.py", "fifo")), codes=(1,), keep=("c.jsonl",),
+               says=r"scorer s/score_parse\.py is a FIFO", timeout=30)
+
+
+def hostile30_output_cases() -> Iterator[Case]:  # noqa: PLR0915 - one list of cases, read top to bottom
+    """Round hostile30's third batch, outputs and interrupted writes: an output that is an input through ``..``,
+    ``./``, a link into a folder, a hard link, a shipped map's image reached by an absolute link; names that differ
+    from an input only by case (another file: written); ``plan --pddl`` into the folder of an input named like its
+    files; ``--goals``, ``import-bag -o`` and ``bench tasks --episodes`` past ``ulimit -f`` and stopped by SIGTERM,
+    SIGHUP or SIGINT while writing; bags that are empty, garbage, a FIFO, ``/dev/zero`` by a link, cut short."""
+    from seal_cli.resources import map_path
+
+    loc = ("localize", "--map", "apartment", "--task", "go to the kitchen", "--steps", "2", "--particles", "20")
+    obs = b"- pose: [-6, -3]\n  detections: []\n- pose: [-5.5, -3]\n  detections: []\n"
+    # -- an output that is an input, however it is reached ---------------------------------------------------------
+    yield Case("A localize --goals onto its observations through d/..", (*loc, "--observations", "o.yaml", "--goals",
+                                                                         "d/../o.yaml"),
+               (("o.yaml", obs), ("d", "dir")), codes=(1,), keep=("o.yaml",), says=r"--goals d/\.\./o\.yaml")
+    yield Case("A localize --goals onto its observations through ./", (*loc, "--observations", "o.yaml", "--goals",
+                                                                       "./o.yaml"),
+               (("o.yaml", obs),), codes=(1,), keep=("o.yaml",), says=r"--goals (\./)?o\.yaml is an input")
+    yield Case("A localize --goals onto its trajectory through a link to its folder",
+               (*loc, "--trajectory", "d/t.yaml", "--goals", "l/t.yaml"),
+               (("d/t.yaml", b"poses:\n  - [-6, -3]\n  - [-5.5, -3]\n"), ("l", "link:d")), codes=(1,),
+               keep=("d/t.yaml",), says=r"--goals l/t\.yaml")
+    yield Case("A localize --goals named as its observations but for case", (*loc, "--observations", "o.yaml",
+                                                                             "--goals", "O.yaml"),
+               (("o.yaml", obs),), codes=(0,), keep=("o.yaml",), whole=("O.yaml",), says=r"(?s).")
+    image = str(map_path("apartment").with_suffix(".pgm"))
+    yield Case("A run --png onto a link to the shipped map's image",
+               ("run", "go to the kitchen", "--map", "apartment", "--particles", "20", "--png", "l.png"),
+               (("l.png", f"link:{image}"),), codes=(1,), says=r"--png l\.png would overwrite the input")
+    yield Case("A map --png onto a link to the shipped map's own YAML", ("map", "apartment", "--png", "l.png"),
+               (("l.png", f"link:{map_path('apartment')}"),), codes=(1,), says=r"--png l\.png would overwrite")
+    yield Case("A plan --pddl into the folder of its vocabulary named domain.pddl",
+               ("plan", "stir the cup", "--vocabulary", "d/domain.pddl", "--pddl", "d"),
+               (("d/domain.pddl", b"cup: [mug]\n"),), codes=(1,), keep=("d/domain.pddl",),
+               says=r"--pddl .*d/domain\.pddl would overwrite")
+    yield Case("A plan --pddl whose problem.pddl is a hard link to its frame file",
+               ("plan", "whisk the cup", "--framelib", "+f.frame", "--pddl", "d"),
+               (("f.frame", b'frame Whisk "whisk" {\n  theme: object\n  do navigate(theme)\n}\n'),
+                ("d/problem.pddl", "hard:f.frame")), codes=(1,), keep=("f.frame", "d/problem.pddl"),
+               says=r"--pddl .*d/problem\.pddl would overwrite")
+    data = alfred2d_data()
+    yield Case("A bench tasks --episodes onto its trials through d/../d", ("bench", "tasks", "--data", "d",
+                                                                        "--policies", "sefm", "--jobs", "1",
+                                                                        "--particles", "20", "--episodes",
+                                                                        "d/../d/trials_valid_seen.jsonl"),
+               data, codes=(1,), keep=tuple(n for n, _ in data), says=r"--episodes d/\.\./d/trials_valid_seen\.jsonl")
+    # -- interrupted and cut-short writes --------------------------------------------------------------------------
+    yield Case("A localize --goals of 235 bytes within ulimit -f of 512 bytes", (*loc, "--observations", "o.yaml",
+                                                                             "--goals", "g.yaml"),
+               (("o.yaml", obs),), codes=(0,), keep=("o.yaml",), whole=("g.yaml",), file_blocks=1, says=r"(?s).")
+    yield Case("A localize --goals .mcap past ulimit -f of 512 bytes", (*loc, "--observations", "o.yaml", "--goals",
+                                                                        "g.mcap"),
+               (("o.yaml", obs),), codes=(1,), keep=("o.yaml",), absent=("g.mcap",), file_blocks=1,
+               says=r"error: cannot write --goals g\.mcap: File too large")
+    tiny = ("bench", "tasks", "--suite", "map", "--map", "studio", "--command", "go to the sofa", "--layouts", "3",
+            "--policies", "oracle,sefm", "--particles", "20", "--episodes", "e.jsonl")
+    yield Case("A bench tasks --episodes past ulimit -f of 512 bytes", (*tiny, "--jobs", "1"), codes=(1,),
+               absent=("e.jsonl",), file_blocks=1, says=r"--episodes e\.jsonl: File too large|File too large",
+               timeout=120)
+    yield Case("A SIGTERM during bench tasks --jobs 2 --episodes", (*tiny, "--jobs", "2"), codes=(143,),
+               absent=("e.jsonl",), signal=(15, 4.0), timeout=120)
+    yield Case("A SIGHUP during localize --goals", ("localize", "--map", "apartment", "--task", "go to the kitchen",
+                                                    "--steps", "400", "--particles", "2000", "--goals", "g.yaml"),
+               codes=(129,), absent=("g.yaml",), signal=(1, 4.0), timeout=60)
+    # -- bags ------------------------------------------------------------------------------------------------------
+    bag = _sample_bag()
+    if bag is None:
+        return
+    yield Case("A import-bag -o onto its bag through d/..", ("import-bag", "run.mcap", "-o", "d/../run.mcap"),
+               (("run.mcap", bag), ("d", "dir")), codes=(1,), keep=("run.mcap",), says=r"-o d/\.\./run\.mcap")
+    yield Case("A import-bag -o past ulimit -f of 512 bytes", ("import-bag", "run.mcap", "-o", "o.yaml"),
+               (("run.mcap", bag),), codes=(1,), keep=("run.mcap",), absent=("o.yaml",), file_blocks=1,
+               says=r"File too large")
+    yield Case("A SIGINT during import-bag", ("import-bag", "run.mcap", "-o", "o.yaml"), (("run.mcap", bag),),
+               codes=(0, 130), keep=("run.mcap",), signal=(2, 1.5))
+    yield Case("A import-bag of an empty .mcap", ("import-bag", "e.mcap", "-o", "o.yaml"), (("e.mcap", b""),),
+               codes=(1,), keep=("e.mcap",), absent=("o.yaml",), says=r"e\.mcap")
+    yield Case("A import-bag of an MCAP cut in half", ("import-bag", "h.mcap", "-o", "o.yaml"),
+               (("h.mcap", bag[:len(bag) // 2]),), codes=(0, 1), keep=("h.mcap",), says=r"h\.mcap|observations")
+    yield Case("A import-bag of a .db3 of garbage", ("import-bag", "g.db3", "-o", "o.yaml"),
+               (("g.db3", b"SQLite format 3\x00" + bytes(range(256)) * 40),), codes=(1,), keep=("g.db3",),
+               absent=("o.yaml",), says=r"g\.db3")
+    yield Case("A import-bag of a ROS 1 .bag cut after its header", ("import-bag", "r.bag", "-o", "o.yaml"),
+               (("r.bag", b"#ROSBAG V2.0\n" + b"\x00" * 64),), codes=(1,), keep=("r.bag",), absent=("o.yaml",),
+               says=r"r\.bag")
+    yield Case("A import-bag of a FIFO named .mcap", ("import-bag", "f.mcap", "-o", "o.yaml"), (("f.mcap", "fifo"),),
+               codes=(1,), absent=("o.yaml",), says=r"f\.mcap", timeout=30)
+    yield Case("A import-bag of a link to /dev/zero named .mcap", ("import-bag", "z.mcap", "-o", "o.yaml"),
+               (("z.mcap", "link:/dev/zero"),), codes=(1,), absent=("o.yaml",), says=r"z\.mcap", timeout=30)
+    yield Case("A localize --bag of an empty .mcap", (*loc, "--bag", "e.mcap"), (("e.mcap", b""),), codes=(1,),
+               keep=("e.mcap",), says=r"e\.mcap")
+    folder = _bag_folder()
+    meta = dict(folder)["x/metadata.yaml"]
+    yield Case("A import-bag of a ROS 2 bag folder whose database is a FIFO", ("import-bag", "x", "-o", "o.yaml"),
+               (("x/metadata.yaml", meta), ("x/out.db3", "fifo")), codes=(1,), keep=("x/metadata.yaml",),
+               absent=("o.yaml",), says=r"x/out\.db3: .*FIFO", timeout=30)

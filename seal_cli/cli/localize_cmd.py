@@ -175,6 +175,7 @@ def localize(
     from seal_cli.frames.reading import load_library
     from seal_cli.maps.formats.map_server import load_map
     from seal_cli.pipeline import frames_to_localise
+    from seal_cli.planning.problem import naming_done
     from seal_cli.resources import map_path
     from seal_cli.sefm.filter import SeFM, SeFMConfig
     from seal_cli.sensing.observations import check_inside, read_observations, read_trajectory
@@ -213,7 +214,8 @@ def localize(
     for said in check_inside(runs, the_map.bounds, the_map.name, the_map.is_occupied, the_map.is_free,
                              the_map.grid.resolution):
         err.print(f"warning: {said}", markup=False)
-    bindings, state = frames_to_localise(tasks or [], library, the_map, holding=held, done=done or [])
+    with naming_done(tasks or [], "", "--task"):  # a refusal located in a task names it
+        bindings, state = frames_to_localise(tasks or [], library, the_map, holding=held, done=done or [])
     if goals is not None and not bindings:
         raise SealError("--goals writes a pose per frame, and there are none: give --task")
     rng = np.random.default_rng(seed)

@@ -191,8 +191,14 @@ def _score(corpora: list[Path], folder: Path, constants: Path, work: Path, libra
             argv = [str(folder / "score_alfred_goals.py"), str(write_plain(read, work)), str(plain_constants)]
         else:
             argv = [str(folder / "score_parse.py"), str(write_plain(read, work))]
-        if not Path(argv[0]).is_file():
-            raise SealError(f"scorer not found: {argv[0]} (give --scorers DIR)", Where(argv[0]))
+        if not Path(argv[0]).is_file():  # a FIFO or a folder of that name was "not found" (hostile30)
+            import os
+
+            from seal_cli.fileio import _kind
+
+            what = f"is {_kind(os.stat(argv[0]).st_mode)}, not a scorer" if os.path.exists(argv[0]) else "not found"
+            raise SealError(f"scorer {argv[0]} {what} (give --scorers DIR, the folder of the shared scorers)",
+                            Where(argv[0]))
         runs.append((read, argv, vocab))
     for read, _, _ in runs:  # then what each holds: the scorer divided by zero on a corpus of no commands
         if not any(commands_of(read.path)):

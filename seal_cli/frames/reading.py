@@ -56,7 +56,9 @@ def __getattr__(name: str) -> Any:
 def _frame_files_under(folder: Path) -> list[Path]:
     """The frame files in a folder and its subfolders (links to folders not followed, as ``rglob``), sorted.
     What vanishes or cannot be listed during the walk is passed over (``seal validate /`` met a process of
-    ``/proc`` that had ended: "error: /proc/20888: No such file or directory")."""
+    ``/proc`` that had ended: "error: /proc/20888: No such file or directory"). A name with a frame file's suffix
+    that is no regular file (a FIFO, a device, a dangling link, a link loop) is kept, for its reading to refuse by
+    its kind: it was passed over, and the frames a user put there silently missing (hostile30)."""
     import os
 
     found = []
@@ -65,7 +67,7 @@ def _frame_files_under(folder: Path) -> list[Path]:
             path = Path(root) / name
             if path.suffix in FRAME_SUFFIXES:
                 try:
-                    if path.is_file():
+                    if path.is_file() or os.path.lexists(path) and not path.is_dir():
                         found.append(path)
                 except OSError:
                     continue
@@ -128,7 +130,12 @@ def read_files(files: Sequence[Path]) -> Contents:
             pieces.problems.append(exc)
             continue
         reader = readers.get(path.suffix, readers[".yaml"])
-        pieces.add(reader(text, str(path)))
+        piece = reader(text, str(path))
+        if not (piece.frames or piece.units or piece.problems or piece.taxonomy.categories or piece.taxonomy.world
+                or piece.taxonomy.synonyms):  # empty, a BOM, comments: "ok" said nothing was wrong (hostile30)
+            piece.problems.append(SealError("this file holds nothing: no frame, category, world fact or synonyms, "
+                                            "nor a map (is it the file you meant?)", Where(str(path))))
+        pieces.add(piece)
     return pieces
 
 

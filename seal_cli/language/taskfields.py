@@ -632,10 +632,10 @@ def model_json(model: FieldModel, source: str) -> str:
 def load_field_model(path: Path) -> FieldModel:
     """The model in this file (a :func:`model_json` text). Raises SealError naming the file when it is not one."""
     from seal_cli.errors import SealError, Where
-    from seal_cli.fileio import read_text
+    from seal_cli.fileio import json_value, read_text
 
     try:
-        data = json.loads(read_text(path))
+        data = json_value(read_text(path), path)
     except json.JSONDecodeError as err:
         raise SealError(f"not JSON: {err.msg}", Where(str(path), err.lineno, err.colno)) from None
     if not isinstance(data, dict) or data.get("format") != "seal-task-fields-1" or not all(

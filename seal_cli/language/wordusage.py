@@ -589,7 +589,7 @@ def load_word_usage(paths: Iterable[str | Path]) -> WordUsage:
     """The word-class tables in these files (or folders of ``*.json``), their counts added."""
     import json
 
-    from seal_cli.fileio import read_text
+    from seal_cli.fileio import json_value, read_text
 
     usage = WordUsage()
     for path in paths:
@@ -597,7 +597,7 @@ def load_word_usage(paths: Iterable[str | Path]) -> WordUsage:
         for file in sorted(path.glob("*.json")) if path.is_dir() else [path]:
             where = Where(str(file))
             try:
-                data = json.loads(read_text(file))
+                data = json_value(read_text(file), file)
             except json.JSONDecodeError as err:
                 raise SealError(f"not JSON: {err.msg}", Where(str(file), err.lineno, err.colno)) from None
             usage = usage.merged(_table(data, where))

@@ -332,7 +332,7 @@ class Things:
         """Keep what the robot holds as the command starts (:attr:`held`): ``holding`` (a class, refused if
         malformed or a room, place or person of the map), else the map's robot's."""
         if holding:
-            check_class_name(holding, "holding")
+            check_class_name(holding, "--holding")  # named as typed (hostile30)
             if self.map is not None:
                 self.map.check_holding(holding)
         self.held = holding or self.robot_holding
@@ -2022,9 +2022,11 @@ def problem_of_text(text: str, library: Library, *, holding: str | None = None, 
 
 
 @contextlib.contextmanager
-def naming_done(done: Sequence[str], text: str) -> Iterator[None]:
+def naming_done(done: Sequence[str], text: str, option: str = "--done") -> Iterator[None]:
     """Say which ``--done`` command a refusal is about: a SealError located in one of them (not in the
-    command itself) gets ``in --done '...':`` before its message, so "column 7" points into that one."""
+    command itself) gets ``in --done '...':`` before its message, so "column 7" points into that one. ``option``:
+    the option the commands were given by (``localize --task``, hostile30: "column 1: unexpected character" named
+    no option)."""
     from seal_cli.language.tokens import printable
     from seal_cli.planning.grounding import spoken
 
@@ -2035,12 +2037,12 @@ def naming_done(done: Sequence[str], text: str) -> Iterator[None]:
         yield
     except SealError as exc:
         line = exc.source_line      # the text, or its start (a command too long is shown cut)
-        which = None if line is None or said(text, line) or exc.message.startswith("in --done ") else \
+        which = None if line is None or said(text, line) or exc.message.startswith("in --") else \
             next((t for t in done if said(t, line)), None)
         if which is None:
             raise
         shown = which if len(which) <= 60 else which[:57] + "..."
-        raise SealError(f"in --done {shown!r}: {exc.message}", exc.where, source_line=line,
+        raise SealError(f"in {option} {shown!r}: {exc.message}", exc.where, source_line=line,
                         hint=exc.hint) from None
 
 

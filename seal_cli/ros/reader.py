@@ -8,6 +8,7 @@
 from __future__ import annotations
 
 import contextlib
+import itertools
 from collections.abc import Iterator
 from pathlib import Path
 from typing import Any
@@ -128,6 +129,12 @@ def open_bag(path: str | Path) -> Iterator[Bag]:
         raise SealError("no such bag", Where(str(path))) from None
     except OSError as exc:  # a link loop, a name too long: Path.exists said "no such bag"
         raise SealError(f"cannot read this bag: {exc.strerror}", Where(str(path))) from None
+    from seal_cli.fileio import _regular
+
+    # a FIFO named .mcap, or a ROS 2 bag's out.db3 that is one: rosbags opened it and waited for ever (hostile30)
+    for file in itertools.islice(path.iterdir(), 10_000) if path.is_dir() else [path]:
+        if not file.is_dir():
+            _regular(file, "bag" if file == path else "bag file")
     _check_suffix(path)
     if path.is_dir():  # its metadata read as seal reads YAML first: rosbags' own failures said no line (hostile29)
         read_yaml(path / "metadata.yaml", what="ROS 2 bag's metadata")

@@ -153,7 +153,7 @@ def write_bag(path: str | Path, messages: Sequence[Message], store: Any | None =
     try:
         work = work_folder(target)
     except OSError as exc:
-        raise SealError(f"cannot write {target}: {exc.strerror or exc}", Where(str(target))) from None
+        raise _failed(target, exc) from None
     try:
         inner = work / ("out.bag" if ros1 else "out")
         _write(inner, messages, store, ros1, mcap=target.suffix == ".mcap")
@@ -161,10 +161,21 @@ def write_bag(path: str | Path, messages: Sequence[Message], store: Any | None =
             inner = next(inner.glob("*.mcap"))
         os.replace(inner, target)
     except OSError as exc:
-        raise SealError(f"cannot write {target}: {exc.strerror or exc}", Where(str(target))) from None
+        raise _failed(target, exc) from None
     finally:
         with contextlib.suppress(OSError):
             shutil.rmtree(work)
+
+
+def _failed(target: Path, error: OSError) -> Exception:
+    """Why writing the bag ``target`` failed: said of ``target``, or, when it is the temporary of an output seal
+    plans (``localize --goals g.mcap``), the system's error of it, for that output to name its option (hostile30:
+    past ``ulimit -f`` it said "cannot write .g.mcap.seal…tmp.mcap: File too large")."""
+    from seal_cli.fileio import is_live_temporary
+
+    if is_live_temporary(target):
+        return OSError(error.errno, error.strerror, str(target))
+    return SealError(f"cannot write {target}: {error.strerror or error}", Where(str(target)))
 
 
 def _write(path: Path, messages: Sequence[Message], store: Any, ros1: bool, mcap: bool) -> None:

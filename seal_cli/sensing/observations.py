@@ -38,6 +38,7 @@ import yaml
 from seal_cli.errors import SealError, Where
 from seal_cli.fileio import compose_yaml, read_text
 from seal_cli.frames.taxonomy import class_key
+from seal_cli.names import check_shown
 from seal_cli.yamlnodes import clipped
 
 MAX_OBSERVATIONS = 100_000
@@ -194,6 +195,10 @@ def read_observations(path: str | Path) -> list[Observation]:
                 cls = parts["class"]
                 if not isinstance(cls, yaml.ScalarNode) or cls.tag != "tag:yaml.org,2002:str" or not cls.value.strip():
                     raise reader.error(f"{label}'s class must be a name, not {_shape(cls)}", cls)
+                try:  # a NUL or an escape through YAML's escapes was printed in the warning as it is (hostile30)
+                    check_shown(cls.value.strip(), f"{label}'s class")
+                except SealError as exc:
+                    raise reader.error(exc.message, cls) from None
                 detections.append((cls.value.strip(), reader.point(parts["at"], f"{label}'s at")))
         out.append(Observation(pose, tuple(detections), reader.where(item)))
     return out

@@ -28,6 +28,9 @@ from seal_cli.bench.reliability_attacker import (
     hostile29_bag_cases,
     hostile29_cases,
     hostile29_environment_cases,
+    hostile30_cases,
+    hostile30_leftover_cases,
+    hostile30_output_cases,
     sparse_pgm,
 )
 from seal_cli.bench.reliability_outsider import outsider_cases
@@ -424,4 +427,36 @@ def test_the_hostile29_environment_cases_are_named_once_and_say_what_they_must()
     found = list(hostile29_environment_cases())
     assert len({c.name for c in found}) == len(found) >= 19 and all(c.env for c in found if "--jobs" not in c.name)
     assert all(c.says for c in found if c.codes in ((0,), (1,)))
+    assert {c.name for c in found} <= {c.name for c in attacker_cases()}
+
+
+@pytest.mark.parametrize(("batch", "name"), [
+    (hostile30_leftover_cases, "A validate of a ROS map whose negate is tagged !!bool on a 0"),
+    (hostile30_leftover_cases, "A bench parse --corpus whose line says text twice"),
+    (hostile30_leftover_cases, "A validate of a ROS map whose PGM has bytes after its pixels"),
+    (hostile30_leftover_cases, "A plan whose --done is a question (where is the cup?)"),
+    (hostile30_leftover_cases, "A bench tasks --episodes into /proc"),
+    (hostile30_cases, "A validate of a map whose resolution is a word and has no image"),
+    (hostile30_cases, "A plan --framelib of a folder holding a FIFO named .frame"),
+    (hostile30_cases, "A localize --observations whose detection's class holds a NUL"),
+    (hostile30_cases, "A localize --task of a zero-width joiner alone"),
+    (hostile30_output_cases, "A import-bag of a FIFO named .mcap"),
+])
+def test_picked_hostile30_cases_end_cleanly(batch: object, name: str, monkeypatch: pytest.MonkeyPatch) -> None:
+    """Each failed before this round: !!bool 0 was a KeyError traceback, a key said twice was taken silently, bytes
+    after a P5's pixels were passed over, /proc was "No such file or directory", resolution: abc passed unread, a
+    FIFO in a frame folder was passed over, a NUL class was printed raw, --task was not named, import-bag of a FIFO
+    hung; the question as --done is read as the question answered (found(cup)), as documented. This tree's code."""
+    if "bag" in name:
+        pytest.importorskip("rosbags")
+    monkeypatch.setenv("PYTHONPATH", str(Path(__file__).resolve().parents[2]))
+    case = next(c for c in batch() if c.name == name)  # type: ignore[operator]
+    assert run_case(case).problems == []
+
+
+def test_the_hostile30_cases_are_named_once_and_say_what_they_must() -> None:
+    found = [*hostile30_leftover_cases(), *hostile30_cases(), *hostile30_output_cases()]
+    assert len({c.name for c in found}) == len(found) >= 80
+    assert all(c.says for c in found if c.codes in ((0,), (1,)))
+    assert sum("tagged" in c.name for c in found) >= 10 and sum("twice" in c.name for c in found) >= 6
     assert {c.name for c in found} <= {c.name for c in attacker_cases()}

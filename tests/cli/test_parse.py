@@ -176,6 +176,25 @@ def test_bench_parse_reports_a_crashing_scorer_as_an_error(tmp_path: Path) -> No
     assert "Traceback" not in result.output + result.stderr
 
 
+
+@pytest.mark.parametrize(("make", "said"), [("fifo", "is a FIFO (named pipe), not a scorer"),
+                                            ("dir", "is a folder, not a scorer"), ("none", "not found")])
+def test_bench_parse_says_what_stands_where_the_scorer_goes(tmp_path: Path, make: str, said: str) -> None:
+    """hostile30: a FIFO or a folder named score_parse.py was "scorer not found"."""
+    import os
+
+    corpus = tmp_path / "c.jsonl"
+    corpus.write_text('{"text": "go to the kitchen", "expect": [{"frame": "Go"}]}\n', encoding="utf-8")
+    scorer = tmp_path / "s" / "score_parse.py"
+    scorer.parent.mkdir()
+    if make == "fifo":
+        os.mkfifo(scorer)
+    elif make == "dir":
+        scorer.mkdir()
+    result = runner.invoke(app, ["bench", "parse", "--corpus", str(corpus), "--scorers", str(scorer.parent)])
+    assert result.exit_code == 1 and f"scorer {scorer} {said} (give --scorers DIR" in result.stderr
+
+
 GO = '"text": "go to the kitchen"'
 
 

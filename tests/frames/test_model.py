@@ -137,3 +137,9 @@ def test_a_description_no_terminal_shows_is_refused(description: str, framenet: 
 
 def test_a_description_keeps_its_line_breaks() -> None:
     assert Frame("Stir", (LexicalUnit("stir"),), description="Stir.\n\tWith a spoon.").description.endswith("spoon.")
+
+
+
+def test_a_lexical_unit_is_spaced_as_a_command_is() -> None:
+    """hostile30: a line separator (YAML's ``\\L``) between a unit's words is a space, as in a command's line."""
+    assert LexicalUnit("whisk\u2028it").text == "whisk it" and LexicalUnit("whisk\u2029").text == "whisk"

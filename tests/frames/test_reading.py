@@ -237,9 +237,10 @@ def test_a_folder_walk_passes_over_what_vanishes_and_does_not_follow_folder_link
     (tmp_path / "other" / "c.frame").write_text("")
     (tmp_path / "lib" / "linked").symlink_to(tmp_path / "other")   # a link to a folder: not walked
     (tmp_path / "lib" / "loop").symlink_to(".")
-    (tmp_path / "lib" / "gone.frame").symlink_to(tmp_path / "nowhere.frame")  # dangling: no file
+    (tmp_path / "lib" / "gone.frame").symlink_to(tmp_path / "nowhere.frame")  # dangling: kept, for reading to refuse
     files, problems = frame_files([tmp_path / "lib"])
-    assert [p.relative_to(tmp_path).as_posix() for p in files] == ["lib/a.yaml", "lib/sub/b.frame"] and not problems
+    assert [p.relative_to(tmp_path).as_posix() for p in files] == ["lib/a.yaml", "lib/gone.frame", "lib/sub/b.frame"]
+    assert not problems
     files, problems = frame_files(["/proc"])  # processes end while it is walked: never "No such file"
     assert files == [] and [p.message for p in problems] == ["no frame files (*.yaml, *.frame) in folder /proc"]
 
@@ -256,12 +257,26 @@ def test_a_file_named_twice_is_read_once(tmp_path: Path) -> None:
     assert problems == [] and len(library) == len(read_library([framelib_dir()])[0])
 
 
-@pytest.mark.parametrize("text", ["", "frames: []\n", "categories:\n  utensil: [spoon]\n"])
-def test_a_library_of_no_frames_is_refused(tmp_path: Path, text: str) -> None:
-    """hostile19: `plan --framelib empty.yaml` said "unknown verb 'stir'; known verbs include " and nothing more."""
+@pytest.mark.parametrize(("text", "says"), [("", r"this file holds nothing: no frame, category"),
+                                           ("frames: []\n", r"this file holds nothing"),
+                                           ("categories:\n  utensil: [spoon]\n",
+                                            r"this frame library holds no frames \(1 file read\)")])
+def test_a_library_of_no_frames_is_refused(tmp_path: Path, text: str, says: str) -> None:
+    """hostile19: `plan --framelib empty.yaml` said "unknown verb 'stir'; known verbs include " and nothing more;
+    hostile30: a file of nothing is said so of itself, also beside others (``--framelib +empty.frame``)."""
     from seal_cli.frames.reading import load_library
 
     (tmp_path / "f.yaml").write_text(text)
-    with pytest.raises(SealError, match=r"this frame library holds no frames \(1 file read\)") as caught:
+    with pytest.raises(SealError, match=says) as caught:
         load_library([tmp_path / "f.yaml"])
     assert caught.value.file == str(tmp_path / "f.yaml")
+
+
+@pytest.mark.parametrize(("name", "text"), [("e.frame", ""), ("c.frame", "// only a comment\r\n"),
+                                            ("b.yaml", "\ufeff# a comment\n")])
+def test_a_frame_file_of_nothing_is_a_problem_of_its_own(tmp_path: Path, name: str, text: str) -> None:
+    """``seal validate`` said "ok: 0 frames" of an empty file, and ``--framelib +empty.frame`` passed it over."""
+    (tmp_path / name).write_text(text, encoding="utf-8")
+    _, problems = read_library([framelib_dir(), tmp_path / name])
+    assert [(p.file, p.message.split(":")[0]) for p in problems] == [(str(tmp_path / name),
+                                                                      "this file holds nothing")]

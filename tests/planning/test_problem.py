@@ -208,6 +208,24 @@ def replace_span(phrase, start: int):  # type: ignore[no-untyped-def]
     return replace(phrase, span=(start, start + len(phrase.text)))
 
 
+def test_a_malformed_holding_names_its_option(library: Library) -> None:
+    """hostile30: ``--holding $'\\u200b'`` was "holding '\\u200b' is not a class name", naming no option."""
+    from seal_cli.errors import SealError
+
+    with pytest.raises(SealError, match=r"^--holding '\\u200b' is not a class name"):
+        problem_of_text("put it on the table", library, holding="\u200b")
+
+
+def test_a_refusal_in_a_command_given_by_another_option_names_that_option(library: Library) -> None:
+    """``localize --task``: "column 1: unexpected character" named no option (hostile30)."""
+    from seal_cli.errors import SealError
+    from seal_cli.planning.problem import naming_done
+
+    with pytest.raises(SealError, match=r"^column 11: in --task 'go to the \\u200d': unexpected character"), \
+            naming_done(["go to the kitchen", "go to the \u200d"], "", "--task"):
+        problem_of_text("go to the \u200d", library)
+
+
 def test_a_refusal_in_a_done_command_names_the_done_option(library: Library) -> None:
     """``--done "go to the garage"`` on a map without one: the column points into the --done text, so
     the message says which it is; a refusal of the command itself stays as it was."""

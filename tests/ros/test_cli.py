@@ -324,3 +324,34 @@ def test_a_bag_folders_metadata_edited_by_hand_is_refused_at_its_line(tmp_path: 
     meta.write_bytes(meta.read_bytes().replace(old, new, 1))
     said = refused("import-bag", str(bag), "-o", str(tmp_path / "o.yaml"), out=tmp_path / "o.yaml")
     assert re.match(rf"error: {re.escape(str(meta))}:\d+:\d+: {says}", said), said
+
+
+def test_a_bag_that_is_a_fifo_or_holds_one_is_refused_by_its_kind(tmp_path: Path) -> None:
+    """hostile30: rosbags opened a FIFO named .mcap (or a ROS 2 bag's database that is one) and waited for ever."""
+    import os
+
+    os.mkfifo(tmp_path / "f.mcap")
+    out = tmp_path / "obs.yaml"
+    said = refused("import-bag", str(tmp_path / "f.mcap"), "-o", str(out), out=out)
+    assert "f.mcap: cannot read this bag: it is a FIFO (named pipe)" in said
+    (tmp_path / "x").mkdir()
+    (tmp_path / "x" / "metadata.yaml").write_text("rosbag2_bagfile_information:\n  version: 5\n")
+    os.mkfifo(tmp_path / "x" / "out.db3")
+    said = refused("import-bag", str(tmp_path / "x"), "-o", str(out), out=out)
+    assert "out.db3: cannot read this bag file: it is a FIFO (named pipe)" in said
+
+
+def test_a_goal_bag_that_fails_to_be_written_names_the_option(tmp_path: Path, monkeypatch: pytest.MonkeyPatch) -> None:
+    """hostile30: past ``ulimit -f`` it was "cannot write .g.mcap.seal…tmp.mcap: File too large", the temporary."""
+    import errno
+
+    from seal_cli.ros import writing
+
+    def full(*_: object, **__: object) -> None:
+        raise OSError(errno.EFBIG, "File too large")
+
+    monkeypatch.setattr(writing, "_write", full)
+    result = invoke("localize", "--map", "apartment", "--task", "go to the kitchen", "--steps", "0", "--goals",
+                    str(tmp_path / "g.mcap"))
+    assert result.exit_code == 1 and "cannot write --goals" in result.output and "File too large" in result.output
+    assert list(tmp_path.iterdir()) == []

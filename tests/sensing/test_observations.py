@@ -55,6 +55,9 @@ def test_a_bad_trajectory_says_where(tmp_path: Path, text: str, line: int, says:
     ("- pose: [1, 2]\n  detections: 5\n", 2, "detections must be a list"),
     ("- pose: [1, 2]\n  detections:\n    - {class: 3, at: [1, 1]}\n", 3, "class must be a name"),
     ("- pose: [1, 2]\n  detections:\n    - {class: cup}\n", 3, "at"),
+    # hostile30: printed as it is in the warning that set it aside (a NUL, an escape sequence on the terminal)
+    ('- pose: [1, 2]\n  detections:\n    - {class: "cu\\0p", at: [1, 1]}\n', 3, "a control character"),
+    ('- pose: [1, 2]\n  detections:\n    - {class: "\\e[31mcup", at: [1, 1]}\n', 3, "a control character"),
     ("- detections: []\n", 1, "pose"),
 ])
 def test_bad_observations_say_where(tmp_path: Path, text: str, line: int, says: str) -> None:

@@ -150,12 +150,29 @@ def _p5_levels(data: bytes, width: int, height: int, maxval: int, pos: int) -> N
     if len(data) - pos < need:
         raise SealError(f"PGM image is truncated: {width}×{height} pixels need {need} bytes, "
                         f"the file has {max(len(data) - pos, 0)}")
+    _check_after(data[pos + need:], f"{width}×{height} pixels", need)
     levels = np.frombuffer(data, dtype=dtype, count=width * height, offset=pos).reshape(height, width)
     top = max((int(levels[r:r + max(1, BAND // width)].max()) for r in range(0, height, max(1, BAND // width))),
               default=0)
     if top > maxval:
         raise SealError(f"PGM pixel value {top} exceeds the maximum {maxval} in its header")
     return levels
+
+
+NEXT_IMAGE = re.compile(rb"\s*P[1-7]\s")
+"""The start of another netpbm image: netpbm writes several images one after another in one file."""
+
+
+def _check_after(rest: bytes, pixels: str, need: int) -> None:
+    """Refuse what a PGM holds after its pixels unless it is whitespace (a line end an editor added) or another
+    netpbm image (of which the first is the map's, as netpbm reads such a file; hostile30: any bytes after the pixels
+    were passed over, so a header whose size was wrong still made a map)."""
+    if not rest or rest.isspace() or NEXT_IMAGE.match(rest):
+        return
+    same = (" (as many again as its pixels: is it a 16-bit image? Its header's maximum must then be above 255)"
+            if len(rest) == need else "")
+    raise SealError(f"PGM image has {len(rest):,} bytes after its {pixels}, neither whitespace nor another image: "
+                    f"its header's width, height or maximum is likely wrong{same}")
 
 
 def read_pgm(data: bytes) -> NDArray[np.float64]:
@@ -175,7 +192,9 @@ def read_pgm(data: bytes) -> NDArray[np.float64]:
         tokens = data[pos:].split()
         if len(tokens) < count:
             raise SealError(f"PGM image is truncated: {width}×{height} pixels, only {len(tokens)} values")
-        tokens = tokens[:count]
+        if len(tokens) > count:
+            raise SealError(f"PGM image has {len(tokens) - count:,} values after its {width}×{height} pixels: its "
+                            "header's width or height is likely wrong")
         if max(map(len, tokens), default=0) > MAX_HEADER_DIGITS:  # beyond any maximum (and int() of 4,300 raises)
             longest = max(tokens, key=len)
             raise SealError(f"PGM pixel value {longest[:12].decode()}… ({len(longest):,} digits) exceeds the "
@@ -464,10 +483,12 @@ class _Reader(NodeReader):
             from seal_cli.maps.formats.occupancy_bag import grid_from_bag
 
             return grid_from_bag(self, nodes)
-        if "image" not in nodes:
+        if "image" not in nodes:  # resolution and origin too: passed over unread, "resolution: abc" was ok (hostile30)
             for key in MAP_SERVER_KEYS[1:]:
-                if key in nodes and key not in ("resolution", "origin"):
-                    self.problem(f"{key} only means something with an image; add image: or remove {key}", nodes[key])
+                if key in nodes:
+                    self.problem(f"{key} only means something with an image; add image: or remove {key}"
+                                 + (" (a map of bounds alone gets cells of its own size)" if key == "resolution"
+                                    else ""), nodes[key])
             return None
         image = self.string(nodes["image"], "image")
         missing = [k for k in ("resolution", "origin") if k not in nodes]

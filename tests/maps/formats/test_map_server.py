@@ -341,3 +341,34 @@ def test_a_map_listing_more_than_the_bound_is_refused_at_the_first_past_it(tmp_p
     rooms = "".join(f"  - {{name: r{i}, box: [{i}, 0, {i + 1}, 1]}}\n" for i in range(3))
     assert (6, "this map lists more than 2 rooms") in [(line, message[:32]) for line, message in
                                                         _problems(tmp_path, f"rooms:\n{rooms}")]
+
+
+@pytest.mark.parametrize(("data", "says"), [
+    (b"P5\n2 2\n255\n\x00\x01\x02\x03GARBAGE", r"7 bytes after its 2×2 pixels, neither whitespace nor another image"),
+    (b"P5\n2 2\n255\n\x00\x01\x02\x03\x04\x05\x06\x07", r"4 bytes after .*\(as many again as its pixels: is it a "
+                                                        r"16-bit image"),
+    (b"P5\n1 1\n65535\n\x00\x01\x00", r"1 bytes after its 1×1 pixels"),
+    (b"P2\n2 1\n255\n1 2 3\n", r"1 values after its 2×1 pixels"),
+])
+def test_what_a_pgm_holds_after_its_pixels_is_refused(data: bytes, says: str) -> None:
+    """hostile30: it was passed over, so a header whose size was wrong still made a map."""
+    with pytest.raises(SealError, match=says):
+        read_pgm(data)
+
+
+@pytest.mark.parametrize("after", [b"\n", b" \r\n\t\n", b"P5\n1 1\n255\n\x07", b"\nP2\n1 1\n255\n7\n"])
+def test_whitespace_or_another_image_after_a_p5s_pixels_is_read(after: bytes) -> None:
+    """A line end an editor added; netpbm's several images in one file (the first is the map's)."""
+    assert read_pgm(b"P5\n2 1\n255\n\x00\xfe" + after).tolist() == [[0.0, 254.0]]
+
+
+@pytest.mark.parametrize(("line", "key"), [("resolution: abc", "resolution"), ("origin: {x: 1}", "origin"),
+                                           ("resolution: 0.05", "resolution")])
+def test_image_keys_without_an_image_are_refused(tmp_path: Path, line: str, key: str) -> None:
+    """hostile30: resolution and origin were passed over unread without an image ("resolution: abc" was ok)."""
+    from seal_cli.maps.formats.map_server import check_map_file
+
+    path = tmp_path / "m.yaml"
+    path.write_text(f"name: m\nbounds: [0, 0, 10, 10]\nrooms:\n  - {{name: hall, box: [0, 0, 10, 10]}}\n{line}\n")
+    found = [(p.line, p.message) for p in check_map_file(path)]
+    assert found and found[0][0] == 5 and found[0][1].startswith(f"{key} only means something with an image")
