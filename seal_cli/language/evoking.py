@@ -21,9 +21,11 @@ from seal_cli.language.english import (
     LOCATIVE,
     NP_OPENERS,
     NUMBER_MEANS,
+    PARTICLES,
     ROUTE_NOUNS,
     SPEAKER_PRONOUNS,
     TIME_UNITS,
+    WH_WORDS,
     is_room_word,
 )
 from seal_cli.language.grounding import PARTS, PIECES, PORTIONS
@@ -81,6 +83,7 @@ class Evoker:
         unit = clause.unit or str(clause.verb.info)
         self.stray_state(unit, clause)
         frames = self.types.evoked_by(unit)
+        self.stranded(unit, frames, clause)
         role = self.types.object_role(unit)
         if role is not None:
             self.object_as(role, clause)
@@ -163,6 +166,33 @@ class Evoker:
         raise CommandError(f"'{verb} {particle}' is no verb of the library: no frame of '{verb}' takes "
                            f"'{particle}' alone; say what to do ('wait here', 'turn it {particle}')",
                            clause.verb.start + 1, self.text, ["a verb the robot knows"])
+
+    def stranded(self, unit: str, frames: Sequence[Frame], clause: Clause) -> None:
+        """"go *to*", "bring the cup *to*", "take the book *from*", "put the cup *in*": a preposition ending the
+        clause with nothing after it, no particle of the unit, leaves the place it leads to unsaid (issue #13: read
+        as a particle, the goal was dropped silently): refused at the preposition. A preposition of a path to or
+        from ("to", "into", "from", ...: :data:`~seal_cli.language.roles.TO`, :data:`FROM`) that is never a
+        particle is always refused; "in", a particle too, only when the thing is said and where it goes is all the
+        frames say of it beyond (a putting: "bring it *in*", "come *in*" go in). "turn it *on*", "pick it *up*" are
+        their units'; "a plate for an egg *to rest on*", "which room should I go *to*" are said before."""
+        last = clause.items[-1] if clause.items else None
+        if not isinstance(last, Word) or last.tag != "PARTICLE" or last.lower in unit.split()[1:] or \
+                last.end < clause.end or self.text[:clause.verb.start].lower().split()[-1:] == ["to"] or \
+                any(w in WH_WORDS for w in self.text[:clause.verb.start].lower().split()):
+            return
+        path = last.lower in TO + FROM and last.lower not in PARTICLES
+        putting = last.lower == "in" and bool(clause.objects) and bool(frames) and \
+            all(self.types.roles(f) - {"theme"} == {"goal"} for f in frames)
+        if not path and not putting:
+            return
+        said = self.text[clause.verb.start:last.end]
+        to_whom = last.lower == "to" and bool(clause.objects) and any("recipient" in self.types.roles(f)
+                                                                       for f in frames)
+        where = "the table" if last.lower in FROM else "the box" if putting or last.lower != "to" else \
+            "me" if to_whom else "the kitchen"
+        ends = "ends the command" if not self.text[last.end:].strip(" .!?") else "has nothing after it"
+        raise CommandError(f"{last.lower!r} {ends}: say {'to whom or where' if to_whom else 'where'} "
+                           f"('{said} {where}')", last.start + 1, self.text, ["a place"])
 
     def there_asked(self, frames: Sequence[Frame], clause: Clause) -> None:
         """"go to the bedroom and tell me how many books *are there*", "... find out how many people there are": an

@@ -198,8 +198,12 @@ def _prohibited_after(s: State, i: int) -> Match | None:
 
 
 def _corrected(s: State, i: int) -> Match | None:
-    """", no, the mug": the phrase after a correction's marks replaces the last noun phrase said."""
+    """", no, the mug": the phrase after a correction's marks replaces the last noun phrase said. After "and" or
+    "but" ("go to the kitchen *and no wait,* go to the office": issue #13, the marks were read into the goal) only
+    with a comma after the marks ("and no sugar", "and actually clean it" correct nothing)."""
     words = s.words
+    if words[i].lower in _CORRECTION_JOINS and not _marks_then_comma(words, i + 1):
+        return None
     k, marks = i + 1, 0
     while k < len(words):
         if words[k].lower == ",":
@@ -247,6 +251,27 @@ def _corrected(s: State, i: int) -> Match | None:
     if split:                                    # the particle stays with its verb, before the phrase said again
         return Match(k - i, last=out[-1], replaces=len(out) - m)
     return Match(k - i, last=out[m - 1], replaces=len(out) - m + 1)
+
+
+_CORRECTION_JOINS = frozenset(["and", "but"])
+"""Joints a correction's marks may follow in place of a comma ("go to the hall *and* no wait, the porch")."""
+
+
+def _marks_then_comma(words: Sequence[Word], k: int) -> bool:
+    """A correction's marks at ``k`` (commas before and between them allowed) whose last is followed by a comma."""
+    while k < len(words) and words[k].lower == ",":
+        k += 1
+    n = longest_phrase(words, k, CORRECTION_MARKS)
+    while n:
+        k += n
+        if k >= len(words) or words[k].lower != ",":
+            return False
+        while k < len(words) and words[k].lower == ",":
+            k += 1
+        n = longest_phrase(words, k, CORRECTION_MARKS)
+        if not n:
+            return True
+    return False
 
 
 def _clause_again(s: State, i: int, k: int) -> Match | None:
@@ -297,7 +322,9 @@ CORRECTED = Rule("a phrase corrected", _corrected, (
     Example("switch on the fan, sorry, switch it off", "fan", ""),        # the verb's first word again (words34)
     Example("hand me the fork, or actually the spoon", "fork", ""),       # "or" before the marks (words36)
     Example("switch the fan off, no, the heater", "fan", ""),             # after a split particle (words36)
-), frozenset([","]), "', no, NP' after a phrase: the new phrase stands for the last one said")
+    Example("go to the kitchen and no wait, go to the office", "kitchen", ""),   # after "and" (issue #13)
+    Example("take the cup but sorry, the mug", "cup", ""),
+), frozenset([","]) | _CORRECTION_JOINS, "', no, NP' after a phrase: the new phrase stands for the last one said")
 DENIED_AFTER = Rule("a phrase denied after the command", _denied_after, (
     Example("give me the big bowl, not the small one.", "small", ""),
     Example("bring the red mug, not the blue one, to the kitchen", "blue", ""),
