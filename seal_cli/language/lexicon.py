@@ -340,10 +340,21 @@ class Lexicon:
             for unit in by_particle.get(low, ()):
                 if _stands_alone(words, j) and match_phrase(words, j - 1, TIME_WORDS) < 2 and \
                         self._split_fits(unit, words, i, j):  # not "right away"
-                    return unit, 1, j
+                    done = j - 1 > i + 1 and self.done_unit(words[j - 1].lower, low) is not None
+                    return unit, 1, j - 1 if done else j   # "leave the heater *turned on*": both the particle
         if any(len(unit) == 1 for unit in candidates):
             return None                          # "take the lid off the pot": "take" is a unit alone
         return _particle_as_source(words, i, stop, by_particle)
+
+    def done_unit(self, done: str, particle: str) -> str | None:
+        """The unit of two words a past participle and a particle say ("turned" "on": "turn on", "switched off"),
+        when the library has it; else None. Said after the thing of a split unit with that particle ("leave the
+        heater *turned on*"), it is the unit's particle said with a verb of the same state, no word of the thing
+        (issue #13: the theme was "the heater turned")."""
+        verb = verb_lemma(done) if done.isalpha() else None
+        if verb is None or done == verb or done not in participles(verb):
+            return None
+        return f"{verb} {particle}" if (verb, particle) in self.units.get(verb, ()) else None
 
     def _split_fits(self, unit: str, words: Sequence[Word], i: int, j: int) -> bool:
         """A split-only unit ("put on") holds around a thing its frame takes, with no place said between: "put the

@@ -41,7 +41,8 @@ def split_unit(s: State, i: int, unit: str) -> int:
     parts = unit.split()
     if len(parts) != 2 or i + 1 >= len(s.words) or s.words[i + 1].lower != parts[1]:
         return 1
-    return 2 if s.words[i].lower in participles(parts[0]) else 1
+    done = s.words[i].lower                     # "leave the heater *turned on*": another verb of the state
+    return 2 if done in participles(parts[0]) or s.lexicon.done_unit(done, parts[1]) is not None else 1
 
 
 DEPARTURE_OBJECT_SHARE = 0.9
