@@ -2140,6 +2140,18 @@ def test_a_phrase_corrected_as_it_is_said(
     assert_reads(text, want, library)
 
 
+@pytest.mark.parametrize(("text", "want"), [
+    ("go to the kitchen and no wait, go to the office", [("Go", {"goal": "office"})]),
+    ("go to the hall and, sorry, go to the porch", [("Go", {"goal": "porch"})]),
+    ("grab the spoon but actually, the fork", [("Pick", {"theme": "fork"})]),
+    ("bring me tea and no sugar", [("Bring", {"theme": "tea", "recipient": "me"})]),   # no comma: no correction
+])
+def test_a_correction_after_and_takes_back_what_was_said(
+        text: str, want: list[tuple[str, dict[str, str]]], library: Library) -> None:
+    """Issue #13: "and no wait," was read into the goal ("the kitchen and no wait") and both goings were done."""
+    assert_reads(text, want, library)
+
+
 def test_an_ordinal_before_a_number_is_part_of_the_counted_phrase(library: Library) -> None:
     (place,) = parse_command("put the last two cups in the sink", library).frames
     assert place.elements["theme"].text == "the last two cups" and place.elements["theme"].quantity == 2

@@ -5,6 +5,7 @@ from __future__ import annotations
 import pytest
 
 from seal_cli.frames.library import Library
+from seal_cli.language.lexicon import CommandError
 from seal_cli.language.parser import parse_command
 
 
@@ -223,3 +224,41 @@ def test_how_many_there_are_of_nothing_said_reports_the_count_before(library: Li
     """"there" names no place where nothing is counted: the telling reports the count before (words41's merge)."""
     assert _frames("count the cups in the sink and let me know how many there are", library) == [
         ("Count", {"theme": "the cups", "ground": "the sink"})]
+
+
+@pytest.mark.parametrize(("text", "prep", "column"), [
+    ("go to", "to", 4),
+    ("bring the cup to", "to", 15),
+    ("put the cup in", "in", 13),
+    ("take the book from", "from", 15),
+    ("drop the keys into.", "into", 15),
+    ("walk to and wait there", "to", 6),                           # ends its clause, not the command
+])
+def test_a_preposition_with_nothing_after_it_is_refused_at_it(library: Library, text: str, prep: str,
+                                                              column: int) -> None:
+    """Issue #13: read as a particle, it left the place unsaid and the command went nowhere, silently."""
+    with pytest.raises(CommandError) as refused:
+        parse_command(text, library)
+    assert refused.value.column == column and refused.value.message.startswith(f"{prep!r} ")
+    assert "say where" in refused.value.message or "say to whom" in refused.value.message
+
+
+@pytest.mark.parametrize(("text", "frame"), [
+    ("bring it in", "Bring"), ("come in", "Go"), ("turn it on", "ToggleOn"), ("pick it up", "Pick"),
+    ("put it down", "Place"), ("which room should I go to", "Tell"), ("put the cup in the box", "Place"),
+])
+def test_a_particle_of_the_unit_or_a_fronted_object_is_no_stranded_preposition(library: Library, text: str,
+                                                                              frame: str) -> None:
+    assert [f for f, _ in _frames(text, library)] == [frame]
+
+
+@pytest.mark.parametrize(("text", "frame", "theme"), [
+    ("leave the heater turned on", "ToggleOn", "the heater"),
+    ("leave the lamp switched off", "ToggleOff", "the lamp"),
+    ("leave the kitchen light turned on in the hall", "ToggleOn", "the kitchen light in the hall"),
+    ("leave the heater on", "ToggleOn", "the heater"),
+])
+def test_a_participle_of_the_state_before_the_particle_is_no_word_of_the_thing(
+        library: Library, text: str, frame: str, theme: str) -> None:
+    """Issue #13: "leave the heater turned on" had the theme "the heater turned" (head "turned")."""
+    assert _frames(text, library) == [(frame, {"theme": theme})]
