@@ -173,7 +173,8 @@ class Evoker:
         as a particle, the goal was dropped silently): refused at the preposition. A preposition of a path to or
         from ("to", "into", "from", ...: :data:`~seal_cli.language.roles.TO`, :data:`FROM`) that is never a
         particle is always refused; "in", a particle too, only when the thing is said and where it goes is all the
-        frames say of it beyond (a putting: "bring it *in*", "come *in*" go in). "turn it *on*", "pick it *up*" are
+        frames say of it beyond (a putting: "bring it *in*", "come *in*" go in), in the command's first frame
+        ("open the microwave, put the cup *in*": in what was said before). "turn it *on*", "pick it *up*" are
         their units'; "a plate for an egg *to rest on*", "which room should I go *to*" are said before."""
         last = clause.items[-1] if clause.items else None
         if not isinstance(last, Word) or last.tag != "PARTICLE" or last.lower in unit.split()[1:] or \
@@ -181,8 +182,9 @@ class Evoker:
                 any(w in WH_WORDS for w in self.text[:clause.verb.start].lower().split()):
             return
         path = last.lower in TO + FROM and last.lower not in PARTICLES
-        putting = last.lower == "in" and bool(clause.objects) and bool(frames) and \
-            all(self.types.roles(f) - {"theme"} == {"goal"} for f in frames)
+        putting = last.lower == "in" and not self.frames and bool(clause.objects) and bool(frames) and \
+            all(self.types.roles(f) - {"theme"} == {"goal"} for f in frames)   # "open the microwave, put the cup
+        #                                                                        in": the thing said before
         if not path and not putting:
             return
         said = self.text[clause.verb.start:last.end]

@@ -200,7 +200,8 @@ def _prohibited_after(s: State, i: int) -> Match | None:
 def _corrected(s: State, i: int) -> Match | None:
     """", no, the mug": the phrase after a correction's marks replaces the last noun phrase said. After "and" or
     "but" ("go to the kitchen *and no wait,* go to the office": issue #13, the marks were read into the goal) only
-    with a comma after the marks ("and no sugar", "and actually clean it" correct nothing)."""
+    with a comma after the marks ("and no sugar", "and actually clean it" correct nothing), and then the clause's
+    verb again or a phrase with a determiner ("but actually, *the* fork")."""
     words = s.words
     if words[i].lower in _CORRECTION_JOINS and not _marks_then_comma(words, i + 1):
         return None
@@ -228,6 +229,8 @@ def _corrected(s: State, i: int) -> Match | None:
     again = _clause_again(s, i, k)
     if again is not None:
         return again
+    if words[i].lower in _CORRECTION_JOINS and words[k].lower not in NP_OPENERS:
+        return None                              # "and, I mean, *see* if Jane is there": a next step, no phrase
     if not s.np_starts(k) or s.verb_after(k) and words[k].lower not in ("the", "a", "an", "my", "your"):
         return None
     end = k
