@@ -52,6 +52,7 @@ from seal_cli.planning.plan import already_so, open_already
 from seal_cli.planning.questions import STATE_WORDS, Question
 from seal_cli.planning.state import State
 from seal_cli.sim.policies.base import Policy
+from seal_cli.sim.relaying import SENDER, relayed
 from seal_cli.sim.unsearched import Unsearched
 from seal_cli.sim.world import HAND, PERSON, Detection, Item, Outcome, Reason, World
 
@@ -1901,6 +1902,8 @@ class Agent:
                 counted = self.how_many(action.args[0], binding)
                 self.answer(counted)
                 return self._act_words(action.name, list(action.args), f"counted: {counted}")
+            if action.name == "say" and binding.elements.get("recipient") not in (None, SPEAKER):
+                return self._act_words("say", list(action.args), f'said "{self.passed_on(action.args[0])}"')
             return self._act_words(action.name, list(action.args))
         if action.name == "wait":
             return self.wait(binding)
@@ -2008,6 +2011,12 @@ class Agent:
             how = without_not_found(self.in_words(outcome.message), name)
             self._act_words("say", ["report"], f"tells the speaker that it did not find {name}"
                             + (f" ({how})" if how else ""))
+
+    def passed_on(self, message: str) -> str:
+        """A message told to someone other than the speaker, as the robot passes it on: the speaker's "I" said as
+        the speaker (:mod:`seal_cli.sim.relaying`; "the doctor" where the map calls the speaker so)."""
+        roles = self.scene.map.speaker_roles
+        return relayed(said_words(message), f"the {spoken(roles[0])}" if roles else SENDER)
 
     def in_words(self, text: str) -> str:
         """An answer as said to a person, not printed for the speaker's record: a thing's or place's id as its
