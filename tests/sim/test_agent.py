@@ -964,3 +964,20 @@ def test_a_balcony_is_said_on_and_a_room_in(library: Library, text: str, said: s
     heard = [r.text for r in agent.records] + [f"answer: {a}" for a in agent.answers]
     assert said in heard
     assert not any("in the balcony" in t for t in heard)
+
+
+@pytest.mark.parametrize(("house", "text", "said"), [
+    ("studio", "tell Nora I'm ready", 'said "the person who sent me says they\'re ready"'),
+    ("studio", "tell Nora to call me", 'said "the person who sent me asks you to call them"'),
+    ("studio", "tell Nora dinner is ready", 'said "dinner is ready"'),
+    ("studio", "tell me I'm ready", 'said "I\'m ready"'),              # to the speaker: their own words back
+    ("clinic", "tell Victor I'm running late", 'said "the doctor says they\'re running late"'),
+])
+def test_a_message_passed_on_says_whose_it_is(library: Library, house: str, text: str, said: str) -> None:
+    """Nora heard "I'm ready" from the robot (words45): the sender's "I" is passed on as the sender."""
+    from seal_cli.maps.formats.map_server import load_map
+    from seal_cli.pipeline import run_on_map
+
+    agent, result = run_on_map(load_map(house), text, library, make_policy("sefm"), rng=np.random.default_rng(0))
+    assert result.completed, result.reason
+    assert said in [r.text for r in agent.records]
