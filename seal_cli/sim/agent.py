@@ -52,7 +52,7 @@ from seal_cli.planning.plan import already_so, open_already
 from seal_cli.planning.questions import STATE_WORDS, Question
 from seal_cli.planning.state import State
 from seal_cli.sim.policies.base import Policy
-from seal_cli.sim.relaying import SENDER, relayed
+from seal_cli.sim.relaying import SENDER, asked_for, relayed
 from seal_cli.sim.unsearched import Unsearched
 from seal_cli.sim.world import HAND, PERSON, Detection, Item, Outcome, Reason, World
 
@@ -1980,8 +1980,12 @@ class Agent:
         ("Raj gave no answer (...)"), rather than leaving the speaker to wonder what was said."""
         asked = said_words(str(binding.elements.get("message", ""))).strip()
         person = binding.elements.get("recipient")
+        put = asked     # to another, "ask Sam if I can ...": the speaker's "I" (back to the speaker: as said)
+        if person not in (None, SPEAKER):
+            roles = self.scene.map.speaker_roles
+            put = asked_for(asked, f"the {spoken(roles[0])}" if roles else SENDER)
         whom = f" {person}" if person is not None and person != SPEAKER else ""
-        outcome = self._act_words("say", [binding.elements.get("message", asked)], f'asked{whom} "{asked}?"')
+        outcome = self._act_words("say", [binding.elements.get("message", asked)], f'asked{whom} "{put}?"')
         if outcome.ok and whom:
             self.answer(f'{person} gave no answer to "{asked}?" (the simulator\'s people do not speak)')
             if self.index + 1 >= len(self.steps) and SPEAKER in self.world.items:

@@ -5,6 +5,9 @@ person relaying a message says whose it is and turns its first person singular i
 
 - a statement: "I'm ready" → *the person who sent me says they're ready*; "I was right and my tea is cold" →
   *... says they were right and their tea is cold*; "it's me" → *... says it's them*;
+- a question asked for the sender ("ask Sam if I can borrow his book": "can I borrow his book?") →
+  *can the person who sent me borrow his book?* (:func:`asked_for`: the sender is the subject after the auxiliary,
+  which agrees with it, :data:`INVERTED`: "do I" *does the person who sent me*, "am I" *is ...*);
 - a request (the message opens with a verb: "tell Nora to call me", the message "call me") → *the person who
   sent me asks you to call them*; "don't forget my keys" → *... asks you not to forget their keys*.
 
@@ -22,7 +25,7 @@ import re
 from seal_cli.language.english import NP_OPENERS, SUBJECTS
 from seal_cli.language.morphology import verb_lemma
 
-__all__ = ["SENDER", "relayed"]
+__all__ = ["SENDER", "asked_for", "relayed"]
 
 SENDER = "the person who sent me"
 """Who a relayed message is from, when the map gives the speaker no other name."""
@@ -33,6 +36,10 @@ THIRD_PERSON = {"i": "they", "me": "them", "my": "their", "mine": "theirs", "mys
 
 AGREEMENT = {"am": "are", "was": "were", "wasn't": "weren't", "'m": "'re"}
 """A verb after "I" that changes after "they"; every other form of every verb is the same after both."""
+
+INVERTED = {"am": "is", "do": "does", "have": "has", "don't": "doesn't", "haven't": "hasn't", "aren't": "isn't"}
+"""An auxiliary before "I" in a question, agreeing with the sender named in its place (a singular noun phrase);
+every other auxiliary ("can", "should", "was", "will") is the same before both."""
 
 _WORD = re.compile(r"[A-Za-z]+(?:['’][A-Za-z]+)*")
 
@@ -64,3 +71,19 @@ def relayed(words: str, sender: str = SENDER) -> str:
             and first.isalpha() and verb_lemma(first) == first:
         return f"{sender} asks you to {third}"
     return f"{sender} says {third}"
+
+
+def asked_for(question: str, sender: str = SENDER) -> str:
+    """A question the robot asks someone for ``sender`` (the module docstring): the "I" after its auxiliary is the
+    sender, any other first person singular the third; unchanged when it holds none."""
+    words = question.split()
+    if not any(w.lower().replace("’", "'") in THIRD_PERSON for w in _WORD.findall(question)):
+        return question
+    for k in range(len(words) - 1):
+        if words[k + 1] == "I":
+            aux = words[k].lower().replace("’", "'")
+            words[k] = INVERTED.get(aux, words[k])
+            words[k + 1] = sender
+            break
+    after_i = [False]
+    return " ".join(w if w == sender else _WORD.sub(lambda m: _third(m, after_i), w) for w in words)

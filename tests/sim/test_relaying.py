@@ -2,7 +2,7 @@ from __future__ import annotations
 
 import pytest
 
-from seal_cli.sim.relaying import SENDER, relayed
+from seal_cli.sim.relaying import SENDER, asked_for, relayed
 
 
 @pytest.mark.parametrize(("words", "passed_on"), [
@@ -28,3 +28,14 @@ def test_the_senders_first_person_is_passed_on_in_the_third(words: str, passed_o
 def test_the_sender_is_named_when_known() -> None:
     assert relayed("I'm running late", "the doctor") == "the doctor says they're running late"
     assert SENDER == "the person who sent me"
+
+
+@pytest.mark.parametrize(("question", "asked"), [
+    ("can I borrow his book", "can the person who sent me borrow his book"),
+    ("do I need my umbrella", "does the person who sent me need their umbrella"),
+    ("am I late", "is the person who sent me late"),
+    ("do you want tea", "do you want tea"),
+])
+def test_a_question_asked_for_the_sender_names_them_where_it_said_i(question: str, asked: str) -> None:
+    """"ask Sam if I can borrow his book" asked Sam "can I borrow his book?", the robot's "I" (words45)."""
+    assert asked_for(question) == asked
