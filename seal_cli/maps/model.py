@@ -50,6 +50,7 @@ from seal_cli.maps.geometry import (
     polygon_area,
     self_intersections,
 )
+from seal_cli.maps.prepositions import ROOM_PREPOSITIONS
 from seal_cli.names import check_name_length, check_sayable
 
 if TYPE_CHECKING:
@@ -101,17 +102,24 @@ class MapWarning(SealError):
 # -- value objects ------------------------------------------------------------------------------
 @dataclass(frozen=True)
 class Room:
-    """A named room: a simple polygon (vertices in order, either orientation, not closed)."""
+    """A named room: a simple polygon (vertices in order, either orientation, not closed).
+
+    ``preposition`` is how English says something is there ("in", "on" or "at": *on* the balcony), when the map
+    gives one; None lets :func:`~seal_cli.maps.prepositions.located` take English's default for the name."""
 
     name: str
     polygon: tuple[XY, ...]
     where: Where | None = field(default=None, compare=False, repr=False)
+    preposition: str | None = None
 
     def __post_init__(self) -> None:
         if not isinstance(self.name, str) or not class_key(self.name):
             raise SealError(f"a room needs a name, not {self.name!r}", self.where)
         check_name_length(self.name, "room name", self.where)
         check_sayable(self.name, "room name", self.where)
+        if self.preposition is not None and self.preposition not in ROOM_PREPOSITIONS:
+            raise SealError(f"room {self.name}: preposition must be one of {', '.join(ROOM_PREPOSITIONS)}, not "
+                            f"{self.preposition!r}", self.where)
         if self.name.strip().casefold() == OUTSIDE:
             raise SealError(f"a room cannot be called {self.name!r}: seal's outputs give that name to the mass in no "
                             "room; call the room another name", self.where)
@@ -132,13 +140,14 @@ class Room:
         object.__setattr__(self, "polygon", tuple((float(x), float(y)) for x, y in vertices))
 
     @classmethod
-    def box(cls, name: str, xmin: float, ymin: float, xmax: float, ymax: float, where: Where | None = None) -> Room:
+    def box(cls, name: str, xmin: float, ymin: float, xmax: float, ymax: float, where: Where | None = None,
+            preposition: str | None = None) -> Room:
         """An axis-aligned room (the ``box: [xmin, ymin, xmax, ymax]`` shorthand)."""
         if not (xmin < xmax and ymin < ymax):
             raise SealError(f"room {name}: box must be [xmin, ymin, xmax, ymax] with xmin < xmax and ymin < ymax, "
                             f"not {[xmin, ymin, xmax, ymax]}", where)
         corners = box_polygon(xmin, ymin, xmax, ymax)
-        return cls(name, tuple((float(x), float(y)) for x, y in corners), where)
+        return cls(name, tuple((float(x), float(y)) for x, y in corners), where, preposition)
 
     @cached_property
     def vertices(self) -> NDArray[np.float64]:

@@ -46,6 +46,7 @@ from seal_cli.language.english import NUMBERS, ROOM_WORDS, SOME_PERSON, VAGUE_NU
 from seal_cli.language.lexicon import noun_lemma
 from seal_cli.language.morphology import is_adjective
 from seal_cli.maps.model import SPEAKER, Map
+from seal_cli.maps.prepositions import located
 
 __all__ = ["FIXED", "HERE", "PAIRED", "ROOM_WORDS", "SPEAKER_WORDS", "MapNames", "Referent", "Refusal", "kind_of",
            "spoken"]
@@ -225,7 +226,7 @@ class MapNames:
         if where and (room := self._room_of_words(where)) is not None:
             inside = tuple(p for p in found if self._room_of_person(p) == room)
             if not inside:
-                raise Refusal(f"the {self._house} has no {what} in the {room.replace('_', ' ')}; it has "
+                raise Refusal(f"the {self._house} has no {what} {located(room, self.map)}; it has "
                               f"{self._who(found)}")
             found = inside
         if len(found) > 1:
@@ -324,9 +325,9 @@ class MapNames:
         if where and (room := self._room_of_words(where)) is not None:
             inside = [r for r in found if r.room == room or r.id == room or self._also_in(r, room)]
             if not inside:
-                what, there = " ".join(thing), room.replace("_", " ")
+                what, there = " ".join(thing), located(room, self.map)
                 others = ", ".join(f"{r.id} ({r.room or 'in no room'})" for r in found)
-                raise Refusal(f"the {self._house} has no {what} in the {there}; it has {others}")
+                raise Refusal(f"the {self._house} has no {what} {there}; it has {others}")
             found = inside
         typed = [r for r in found if r.kind != "place" or kind_of(self.taxonomy, r.cls, element_type) is not False
                  or (element_type == "openable" and self._openable(r.id))]
@@ -359,15 +360,15 @@ class MapNames:
         said = f"'{' '.join(text.split())}' could be {', '.join(listed[:-1])} or {listed[-1]}: chose"
         inside = [r for r in places if self.room_said is not None and r.room == self.room_said]
         if len(inside) == 1:
-            self.chosen.setdefault(inside[0].id, f"{said} {inside[0].id}, the one in the "
-                                   f"{spoken(inside[0].room or '')}, the room said before it")
+            self.chosen.setdefault(inside[0].id, f"{said} {inside[0].id}, the one "
+                                   f"{located(inside[0].room or '', self.map)}, the room said before it")
             return inside[0]
         among = inside or places
         start, there = self.robot_at or (self.map.robot.xy, "where it starts")
         lengths = drive_lengths(self.map, start, [r.id for r in among])
         best = min(range(len(among)), key=lambda k: (lengths[k], k))
         one = among[best]
-        which = f" of those in the {spoken(one.room or '')} (the room said before it)," if inside else ""
+        which = f" of those {located(one.room or '', self.map)} (the room said before it)," if inside else ""
         if math.isinf(lengths[best]):       # a house split in islands: no path to any ("inf m" said before)
             said = said.removesuffix(": chose")
             self.chosen.setdefault(one.id, f"{said}: the robot can reach none of them from {there}; chose "

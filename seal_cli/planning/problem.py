@@ -48,6 +48,7 @@ from seal_cli.frames.library import Library
 from seal_cli.frames.model import Action, Binding, Fact, Frame
 from seal_cli.frames.taxonomy import Taxonomy, check_class_name, class_key, class_words
 from seal_cli.maps.model import SPEAKER
+from seal_cli.maps.prepositions import located
 from seal_cli.planning.grounding import FIXED, PAIRED, WHERE_TYPES, is_room_word, kind_of, where_words, words_of
 from seal_cli.planning.questions import name_asked
 from seal_cli.planning.state import State, robot_facts
@@ -517,7 +518,7 @@ def _values(phrase: Phrase, earlier: Sequence[Mapping[str, tuple[str, ...]]], th
         return things.instances(kept, 1)        # "some water" and the map's water bottle: the bottle, once
     if carried and not asked and things.map is not None and (sources := _comes_from(value, things)):
         m = things.map
-        where = ", ".join(f"{p.name} (in the {(p.room or '?').replace('_', ' ')})" for p in sources)
+        where = ", ".join(f"{p.name} ({located(p.room or '?', m)})" for p in sources)
         kinds = m.kinds()
         known = f"; the things it knows of are {', '.join(kinds)}" if kinds else ""
         word = " ".join(class_words(value))
@@ -1313,10 +1314,10 @@ def _put_away(frame: Frame, evoked: Evoked, values: Mapping[str, tuple[str, ...]
             return {}                                  # goes in), but it is not where the thing goes *back*
         if spot is None:
             known = sorted(class_key(c) for c in m.priors)
-            targets = " or ".join(t.replace("_", " ") for t in prior_of(m.priors, cls))
+            targets = " or ".join(located(t, m) for t in prior_of(m.priors, cls))
             but = f" but {lies}, where it is" if lies else ""
             house = _words(m.name)
-            why = (f"the {house} keeps a {cls} in the {targets}, and there is no table, shelf or cupboard there{but}"
+            why = (f"the {house} keeps a {cls} {targets}, and there is no table, shelf or cupboard there{but}"
                    if targets else f"the {house} has no prior of where a {cls} is kept")
             listed = f" (it knows where to keep {', '.join(known)})" if known else ""
             verb = "put back" if back else " ".join(words_of(evoked.lexical_unit))
@@ -1642,7 +1643,7 @@ def _the_ones_said_where(commanded: Sequence[Binding], things: Things) -> None:
         elif (elsewhere := sorted({p for n, c in things.classes.items() if c == cls and n not in things.fixed
                                    and (p := _lies_on(n, things)) is not None})):
             words, m = cls.replace("_", " "), things.map
-            said = f"in the {source.replace('_', ' ')}" if m.room_id(source) is not None else f"in or on {source}"
+            said = located(source, m) if m.room_id(source) is not None else f"in or on {source}"
             things.all_there.append(f"the {_words(m.name)} places no {words} {said} (it has "
                                     f"one in or on {', '.join(elsewhere)}): seal run looks there first, as the command "
                                     f"says, says it found none, then takes the nearest other {words}")

@@ -45,12 +45,14 @@ from seal_cli.frames.taxonomy import class_key
 from seal_cli.language.morphology import counted, plural_of
 from seal_cli.maps.model import SPEAKER, Map
 from seal_cli.maps.navigation import ROBOT_RADIUS, Cell, Grid
+from seal_cli.maps.prepositions import located
 from seal_cli.planning.grounding import kind_of, spoken
 from seal_cli.planning.lying import another_meant, goal_among, several_said
 from seal_cli.planning.plan import already_so, open_already
 from seal_cli.planning.questions import STATE_WORDS, Question
 from seal_cli.planning.state import State
 from seal_cli.sim.policies.base import Policy
+from seal_cli.sim.relaying import SENDER, asked_for, relayed
 from seal_cli.sim.unsearched import Unsearched
 from seal_cli.sim.world import HAND, PERSON, Detection, Item, Outcome, Reason, World
 
@@ -415,7 +417,7 @@ class Agent:
         thing, where = made.args
         room = self.room(where)
         if room is not None:
-            said = f"{seen[thing]} is in the {room.name.replace('_', ' ')} already"
+            said = f"{seen[thing]} is {located(room.name, self.scene.map)} already"
         else:
             place = self.world.items[seen[thing]].parent or where
             said = f"{seen[thing]} is {'in' if self.world.hollow(self.world.items[place]) else 'on'} {place} already"
@@ -470,7 +472,7 @@ class Agent:
         self.shut_there[binding] = (thing, set(shut))
         self.not_meant.setdefault(thing, set()).update(shut)
         where = self._parent(shut[0]).id
-        self.say("search", f"{shut[0]} is in {where} in the {room.name.replace('_', ' ')} already: looks for another "
+        self.say("search", f"{shut[0]} is in {where} {located(room.name, self.scene.map)} already: looks for another "
                  f"{spoken(self.class_of(thing))} to take there", target=thing)
 
     def _take_out_after_all(self, binding: Binding) -> str | None:
@@ -1074,10 +1076,10 @@ class Agent:
                               and bool(room.contains([k.at])[0]) and not self.may_hold(k, value))
                 if shut:    # appliances it did not open: the search goes on, and may yet look into them
                     kind = spoken(self.class_of(value))
-                    return Fatal(False, f"no {self.said(value)} in sight in the {room.name.replace('_', ' ')}, where "
+                    return Fatal(False, f"no {self.said(value)} in sight {located(room.name, self.scene.map)}, where "
                                  f"the command said it was ({', '.join(shut)} left shut: the map keeps no {kind} "
                                  f"there){seen}; searches on", Reason.NOT_FOUND, value)
-                return Fatal(False, f"no {self.said(value)} in the {room.name.replace('_', ' ')}, where the command "
+                return Fatal(False, f"no {self.said(value)} {located(room.name, self.scene.map)}, where the command "
                              f"said it was{seen}{self.elsewhere(value)}", Reason.NOT_FOUND, value)
             self.look_into(place, value, binding, role, f"goes to {place}")
             if place not in self.opened:  # out of reach, or it would not open: not tried again
@@ -1236,7 +1238,7 @@ class Agent:
         room = self.room(value)
         puts = any(a.name in PUTS and role in a.args for a in binding.frame.actions)   # onto a surface there
         if room is not None and not puts and bool(room.contains([self.world.robot.pose[:2]])[0]):
-            self.say("go", f"is in the {spoken(value)} already", to=self.world.robot.pose[:2], metres=0.0)
+            self.say("go", f"is {located(room.name, self.scene.map)} already", to=self.world.robot.pose[:2], metres=0.0)
             return Outcome(True, f"in {value}")
         if room is not None and not puts:      # into the room, not to an appliance of it
             return self.into_room(room, value)
@@ -1407,10 +1409,10 @@ class Agent:
                 any(taxonomy.is_a(k, cls) is True for k in known):
             return None
         m = self.scene.map
-        looked = [r.replace("_", " ") for c, r in sorted(self.missed_rooms) if c == cls] + \
-            [p for p in self.said_places(value) if p in self.missed]
+        looked = [located(r, m) for c, r in sorted(self.missed_rooms) if c == cls] + \
+            [f"in the {p}" for p in self.said_places(value) if p in self.missed]
         if looked:      # "bring me a mug from the kitchen": it looked there, as the command said, and nowhere else
-            said = f"no {self.said(value)} found: none in the {' or '.join(looked)}, where the command said, and " \
+            said = f"no {self.said(value)} found: none {' or '.join(looked)}, where the command said, and " \
                    f"the {m.name.replace('_', ' ')} map names none elsewhere (no prior, object or place of one), so " \
                    "the robot did not search the rest of the house"
         else:
@@ -1512,7 +1514,7 @@ class Agent:
                 return went
             x, y = room.centroid
             self.answer(f"the {spoken(value)} is the room around ({x:.2f}, {y:.2f})")
-            return Outcome(True, f"is in the {spoken(value)}")
+            return Outcome(True, f"is {located(room.name, self.scene.map)}")
         if self.is_person(value) and not self.world.within_reach(value):    # told where: goes to see them
             went = self.go_to(value, binding)
             if not went.ok:
@@ -1647,7 +1649,7 @@ class Agent:
             inside = [k for k in self.known.values() if k.movable and k.id in self.world.items
                       and not self.world.held_chain(k.id)
                       and bool(room.contains([self.world.position(k.id)])[0])]
-            return f"in the {room.name.replace('_', ' ')}", inside, complete
+            return located(room.name, self.scene.map), inside, complete
         place = self.world.items[ground]
         complete = Outcome(True, "looked")
         if not self.world.within_reach(ground):
@@ -1736,9 +1738,10 @@ class Agent:
         return any(bool(np.asarray(self.world.sensor.visible(pose, at))[0]) for pose in self.looks[-SURVEY_VIEWS * 4:])
 
     def _in_room_at(self, x: float, y: float) -> str:
-        """" in the family room" for a point in a room of the map; "" outside every room (or with none)."""
+        """" in the family room" (" on the balcony") for a point in a room of the map; "" outside every room (or with
+        none)."""
         rooms = self.scene.map.room_of([(x, y)]) if self.scene.map.rooms else []
-        return f" in the {rooms[0].replace('_', ' ')}" if rooms and not rooms[0].startswith("_") else ""
+        return f" {located(rooms[0], self.scene.map)}" if rooms and not rooms[0].startswith("_") else ""
 
     def where_is(self, item_id: str) -> str:
         """Where a thing is, as the answer to "where is it?": on or in its place, in its room, at x, y."""
@@ -1899,6 +1902,8 @@ class Agent:
                 counted = self.how_many(action.args[0], binding)
                 self.answer(counted)
                 return self._act_words(action.name, list(action.args), f"counted: {counted}")
+            if action.name == "say" and binding.elements.get("recipient") not in (None, SPEAKER):
+                return self._act_words("say", list(action.args), f'said "{self.passed_on(action.args[0])}"')
             return self._act_words(action.name, list(action.args))
         if action.name == "wait":
             return self.wait(binding)
@@ -1975,8 +1980,12 @@ class Agent:
         ("Raj gave no answer (...)"), rather than leaving the speaker to wonder what was said."""
         asked = said_words(str(binding.elements.get("message", ""))).strip()
         person = binding.elements.get("recipient")
+        put = asked     # to another, "ask Sam if I can ...": the speaker's "I" (back to the speaker: as said)
+        if person not in (None, SPEAKER):
+            roles = self.scene.map.speaker_roles
+            put = asked_for(asked, f"the {spoken(roles[0])}" if roles else SENDER)
         whom = f" {person}" if person is not None and person != SPEAKER else ""
-        outcome = self._act_words("say", [binding.elements.get("message", asked)], f'asked{whom} "{asked}?"')
+        outcome = self._act_words("say", [binding.elements.get("message", asked)], f'asked{whom} "{put}?"')
         if outcome.ok and whom:
             self.answer(f'{person} gave no answer to "{asked}?" (the simulator\'s people do not speak)')
             if self.index + 1 >= len(self.steps) and SPEAKER in self.world.items:
@@ -2006,6 +2015,12 @@ class Agent:
             how = without_not_found(self.in_words(outcome.message), name)
             self._act_words("say", ["report"], f"tells the speaker that it did not find {name}"
                             + (f" ({how})" if how else ""))
+
+    def passed_on(self, message: str) -> str:
+        """A message told to someone other than the speaker, as the robot passes it on: the speaker's "I" said as
+        the speaker (:mod:`seal_cli.sim.relaying`; "the doctor" where the map calls the speaker so)."""
+        roles = self.scene.map.speaker_roles
+        return relayed(said_words(message), f"the {spoken(roles[0])}" if roles else SENDER)
 
     def in_words(self, text: str) -> str:
         """An answer as said to a person, not printed for the speaker's record: a thing's or place's id as its
@@ -2108,7 +2123,7 @@ class Agent:
         if ground is None and self.sweeper is not None and self.scene.map.rooms:
             return self._count_in_house(key, noun)
         n = sum(class_key(d.cls) == key for d in self.world.observe())
-        where = f" in the {ground.replace('_', ' ')}" if ground else " in view"
+        where = f" {located(ground, self.scene.map)}" if ground else " in view"
         return f"{counted(n, noun)}{where}"
 
     def _count_in_house(self, key: str, noun: str) -> str:
@@ -2187,7 +2202,7 @@ class Agent:
             n = sum(1 for k in self.known.values() if not k.movable and k.cls == key and k.id in self.world.items)
             return f"{counted(n, noun)} in the house, by the map"
         n = len(self._fixed_in(key, ground))
-        return f"{counted(n, noun)} in the {ground.replace('_', ' ')}, by the map"
+        return f"{counted(n, noun)} {located(ground, self.scene.map)}, by the map"
 
     def _fixed_in(self, key: str, ground: str) -> list[str]:
         """The places of a class in a room ("how many beds are in the bedroom?"): the map says where

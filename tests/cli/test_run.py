@@ -208,3 +208,13 @@ def test_a_run_not_done_draws_its_whole_picture_and_says_so(tmp_path: Path) -> N
     rrd.unlink()
     refused = runner.invoke(app, [*args[:3], "put the unicorn in the spaceship", *args[4:]])
     assert refused.exit_code == 1 and "not done" not in refused.output and list(tmp_path.iterdir()) == []
+
+
+def test_run_says_on_the_balcony_and_passes_a_message_on_in_the_third_person() -> None:
+    """words45: "Sam is in the balcony" and Nora told the robot's "I'm ready"."""
+    where = runner.invoke(app, ["run", "--map", "studio", "where is Sam", "--particles", "100"])
+    assert where.exit_code == 0, where.output
+    assert "answer: Sam is on the balcony at (7.00, 7.00)" in where.output and "in the balcony" not in where.output
+    told = runner.invoke(app, ["run", "--map", "studio", "tell Nora I'm ready", "--particles", "100"])
+    assert told.exit_code == 0, told.output
+    assert 'said "the person who sent me says they\'re ready"' in told.output

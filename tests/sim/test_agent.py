@@ -945,3 +945,40 @@ def test_the_nearest_of_several_goals_is_chosen_again_from_where_the_thing_lay(l
     assert agent.world.items["brush_1"].parent == "sink_1"
     assert any(r.text.startswith("brush_1 lay on table_2: takes it to sink_1, the nearest from there") for r in
                agent.records)
+
+
+@pytest.mark.parametrize(("text", "said"), [
+    ("where is Sam", "answer: Sam is on the balcony at (7.00, 7.00)"),
+    ("how many towels are on the balcony", "answer: 1 towel on the balcony"),
+    ("look on the balcony", "answer: on the balcony: towel_2, shirt_1"),
+    ("go to the balcony and then go to the balcony again", "is on the balcony already"),
+    ("bring me a book from the balcony", "no book on the balcony, where the command said it was; looks elsewhere"),
+    ("where is Nora", "answer: Nora is in the living area at (8.40, 0.90)"),
+])
+def test_a_balcony_is_said_on_and_a_room_in(library: Library, text: str, said: str) -> None:
+    """The studio's Sam stands on its balcony: the run said "Sam is in the balcony" (words45)."""
+    from seal_cli.maps.formats.map_server import load_map
+    from seal_cli.pipeline import run_on_map
+
+    agent, _ = run_on_map(load_map("studio"), text, library, make_policy("sefm"), rng=np.random.default_rng(0))
+    heard = [r.text for r in agent.records] + [f"answer: {a}" for a in agent.answers]
+    assert said in heard
+    assert not any("in the balcony" in t for t in heard)
+
+
+@pytest.mark.parametrize(("house", "text", "said"), [
+    ("studio", "tell Nora I'm ready", 'said "the person who sent me says they\'re ready"'),
+    ("studio", "tell Nora to call me", 'said "the person who sent me asks you to call them"'),
+    ("studio", "tell Nora dinner is ready", 'said "dinner is ready"'),
+    ("studio", "tell me I'm ready", 'said "I\'m ready"'),              # to the speaker: their own words back
+    ("clinic", "tell Victor I'm running late", 'said "the doctor says they\'re running late"'),
+    ("studio", "ask Sam if I can borrow his book", 'asked Sam "can the person who sent me borrow his book?"'),
+])
+def test_a_message_passed_on_says_whose_it_is(library: Library, house: str, text: str, said: str) -> None:
+    """Nora heard "I'm ready" from the robot (words45): the sender's "I" is passed on as the sender."""
+    from seal_cli.maps.formats.map_server import load_map
+    from seal_cli.pipeline import run_on_map
+
+    agent, result = run_on_map(load_map(house), text, library, make_policy("sefm"), rng=np.random.default_rng(0))
+    assert result.completed, result.reason
+    assert said in [r.text for r in agent.records]

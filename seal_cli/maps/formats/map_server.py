@@ -11,7 +11,8 @@
     mode: trinary               # optional: trinary (default), scale or raw
     name: apartment
     bounds: [-9, -6, 9, 6]      # xmin, ymin, xmax, ymax; default: the image's extent
-    rooms: [{name: kitchen, polygon: [[x, y], ...]}, {name: bedroom, box: [xmin, ymin, xmax, ymax]}]
+    rooms: [{name: kitchen, polygon: [[x, y], ...]}, {name: bedroom, box: [xmin, ymin, xmax, ymax]},
+            {name: sun_trap, box: [...], preposition: on}]   # optional: in, on or at (default: English's)
     places: [{name: fridge_1, class: fridge, at: [x, y], openable: true, open: false, reach: 1.0}]
     priors: {cup: {family_room: 0.5, bedroom: 0.5}}
     objects: [{class: cup, at: [x, y], in: fridge_1}]   # ``at`` defaults to the place's position
@@ -38,7 +39,7 @@ import functools
 import math
 import re
 from collections.abc import Callable, Iterator
-from dataclasses import dataclass
+from dataclasses import dataclass, replace
 from pathlib import Path
 from typing import Any, TypeVar
 
@@ -61,6 +62,7 @@ from seal_cli.maps.geometry import (
     shrink_factor,
 )
 from seal_cli.maps.model import MAX_LISTED, Map, MapWarning, ObjectTruth, Person, Place, Robot, Room, Sensor
+from seal_cli.maps.prepositions import ROOM_PREPOSITIONS
 from seal_cli.names import check_name_length, check_sayable, check_shown
 from seal_cli.resources import map_path
 from seal_cli.yamlnodes import NodeReader
@@ -73,7 +75,7 @@ __all__ = ["KEYS", "MAX_IMAGE_PIXELS", "ImageCells", "check_map_file", "load_map
 MAP_SERVER_KEYS = ("image", "resolution", "origin", "negate", "occupied_thresh", "free_thresh", "mode")
 SEMANTIC_KEYS = ("name", "bounds", "rooms", "places", "priors", "objects", "robot", "sensor", "people", "speaker")
 KEYS = MAP_SERVER_KEYS + ("occupancy",) + SEMANTIC_KEYS  # occupancy: a grid from a bag (formats/occupancy_bag)
-ROOM_KEYS = ("name", "polygon", "box")
+ROOM_KEYS = ("name", "polygon", "box", "preposition")
 PLACE_KEYS = ("name", "class", "at", "openable", "open", "reach")
 OBJECT_KEYS = ("class", "at", "in")
 ROBOT_KEYS = ("pose", "holding")
@@ -563,7 +565,10 @@ class _Reader(NodeReader):
             if len(shapes) != 1 and not (misspelt and not shapes):
                 self.problem("a room needs exactly one of polygon: [[x, y], ...] or box: [xmin, ymin, xmax, ymax]"
                              + (" (it has both)" if len(shapes) == 2 else ""), item)
+            said = self.room_preposition(name, fields["preposition"]) if "preposition" in fields else None
             room = self.room_shape(name, fields, shapes[0]) if name and len(shapes) == 1 else None
+            if room is not None and said:
+                room = replace(room, preposition=said)
             if room is not None:
                 rooms.append(room)
                 kept.append(i)
@@ -571,6 +576,16 @@ class _Reader(NodeReader):
                 self.broken.add(name)
         self.renumber("rooms", kept)
         return tuple(rooms)
+
+    def room_preposition(self, name: str | None, node: yaml.Node) -> str | None:
+        """A room's ``preposition:`` (in, on or at), or None said as a problem at it."""
+        plain = ("tag:yaml.org,2002:str", "tag:yaml.org,2002:bool")      # YAML 1.1 reads a plain "on" as true
+        if isinstance(node, yaml.ScalarNode) and node.tag in plain and node.value in ROOM_PREPOSITIONS:
+            return str(node.value)
+        shown = repr(node.value) if isinstance(node, yaml.ScalarNode) else _shape(node)
+        self.problem(f"room {name or '?'}: preposition must be one of {', '.join(ROOM_PREPOSITIONS)}, not {shown}",
+                     node)
+        return None
 
     def room_shape(self, name: str, fields: dict[str, yaml.Node], shape: str) -> Room | None:
         node = fields[shape]

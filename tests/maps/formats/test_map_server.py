@@ -372,3 +372,22 @@ def test_image_keys_without_an_image_are_refused(tmp_path: Path, line: str, key:
     path.write_text(f"name: m\nbounds: [0, 0, 10, 10]\nrooms:\n  - {{name: hall, box: [0, 0, 10, 10]}}\n{line}\n")
     found = [(p.line, p.message) for p in check_map_file(path)]
     assert found and found[0][0] == 5 and found[0][1].startswith(f"{key} only means something with an image")
+
+
+def test_a_rooms_preposition_is_read_and_a_bad_one_refused_at_its_column(tmp_path: Path) -> None:
+    from seal_cli.maps.prepositions import located
+
+    path = tmp_path / "x.yaml"
+    path.write_text("name: a\nbounds: [0, 0, 10, 10]\nrooms:\n"
+                    "  - {name: sun_trap, box: [0, 0, 5, 5], preposition: on}\n"
+                    "  - {name: balcony, box: [5, 0, 10, 5]}\n")
+    m = load_map(path)
+    assert [r.preposition for r in m.rooms] == ["on", None]
+    assert (located("sun_trap", m), located("balcony", m)) == ("on the sun trap", "on the balcony")
+    said = _problems(tmp_path, "rooms:\n  - {name: hall, box: [0, 0, 5, 5], preposition: under}\n")
+    assert said == [(4, "room hall: preposition must be one of in, on, at, not 'under'")]
+    path.write_text("name: a\nbounds: [0, 0, 10, 10]\nrooms:\n  - {name: hall, box: [0, 0, 5, 5], preposition: [on]}\n")
+    with pytest.raises(SealError) as caught:
+        load_map(path)
+    assert "preposition must be one of in, on, at, not a list" in str(caught.value)
+    assert (caught.value.line, caught.value.column) == (4, 50)      # at the list
