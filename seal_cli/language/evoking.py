@@ -173,19 +173,22 @@ class Evoker:
         as a particle, the goal was dropped silently): refused at the preposition. A preposition of a path to or
         from ("to", "into", "from", ...: :data:`~seal_cli.language.roles.TO`, :data:`FROM`) that is never a
         particle is always refused; "in", a particle too, only when the thing is said and where it goes is all the
-        frames say of it beyond (a putting: "bring it *in*", "come *in*" go in), in the command's first frame
-        ("open the microwave, put the cup *in*": in what was said before). "turn it *on*", "pick it *up*" are
-        their units'; "a plate for an egg *to rest on*", "which room should I go *to*" are said before."""
+        frames say of it beyond (a putting: "bring it *in*", "come *in*" go in) in the command's first frame; after
+        a clause that opened a place it is "in there" ("open the microwave, put the cup *in* and close it": in the
+        microwave; it was a Place with no goal). "turn it *on*", "pick it *up*" are their units'; "a plate for
+        an egg *to rest on*", "which room should I go *to*" are said before."""
         last = clause.items[-1] if clause.items else None
         if not isinstance(last, Word) or last.tag != "PARTICLE" or last.lower in unit.split()[1:] or \
                 last.end < clause.end or self.text[:clause.verb.start].lower().split()[-1:] == ["to"] or \
                 any(w in WH_WORDS for w in self.text[:clause.verb.start].lower().split()):
             return
         path = last.lower in TO + FROM and last.lower not in PARTICLES
-        putting = last.lower == "in" and not self.frames and bool(clause.objects) and bool(frames) and \
-            all(self.types.roles(f) - {"theme"} == {"goal"} for f in frames)   # "open the microwave, put the cup
-        #                                                                        in": the thing said before
-        if not path and not putting:
+        putting = last.lower == "in" and bool(clause.objects) and bool(frames) and \
+            all(self.types.roles(f) - {"theme"} == {"goal"} for f in frames)
+        if putting and self.opened_before():
+            clause.items[-1] = PP("in", NP(last.start, last.end, last, "place", there=True), last.start)
+            return                           # "open the microwave, put the cup *in*": in there, the microwave
+        if not path and not (putting and not self.frames):
             return
         said = self.text[clause.verb.start:last.end]
         to_whom = last.lower == "to" and bool(clause.objects) and any("recipient" in self.types.roles(f)
@@ -195,6 +198,15 @@ class Evoker:
         ends = "ends the command" if not self.text[last.end:].strip(" .!?") else "has nothing after it"
         raise CommandError(f"{last.lower!r} {ends}: say {'to whom or where' if to_whom else 'where'} "
                            f"('{said} {where}')", last.start + 1, self.text, ["a place"])
+
+    def opened_before(self) -> bool:
+        """Whether the place said last before this clause (:meth:`~seal_cli.language.reference.Reference.place_before`)
+        is one a clause opened ("open the microwave, put the cup in": the microwave; not "move the pan to the
+        counter, put the tomato in", where "in" is the pan's)."""
+        place = self.reference.place_before(self.clause_frames)
+        return place is not None and any(
+            action.name == "open" and place[1] in action.args
+            for action in self.library.frame(self.frames[place[0]].frame).actions)
 
     def there_asked(self, frames: Sequence[Frame], clause: Clause) -> None:
         """"go to the bedroom and tell me how many books *are there*", "... find out how many people there are": an

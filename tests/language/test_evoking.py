@@ -252,6 +252,19 @@ def test_a_particle_of_the_unit_or_a_fronted_object_is_no_stranded_preposition(l
     assert [f for f, _ in _frames(text, library)] == [frame]
 
 
+def test_a_putting_in_said_last_after_a_place_opened_is_in_there(library: Library) -> None:
+    """"open the oven, put the tray in and shut it": "in" is in the oven opened before (it was a Place with no goal,
+    the place dropped silently). A place only named ("move the pan to the shelf, put the egg in": in the pan, not
+    the shelf) is not taken for it: as before, no goal."""
+    parse = parse_command("open the oven, put the tray in and shut it", library)
+    assert [f.frame for f in parse.frames] == ["Open", "Place", "Close"]
+    assert parse.frames[1].elements["goal"].refers_to == (0, "theme")
+    assert parse.frames[1].elements["theme"].head == "tray"
+    parse = parse_command("move the pan to the shelf, put the egg in", library)
+    assert [f.frame for f in parse.frames] == ["Place", "Place"]
+    assert "goal" not in parse.frames[1].elements
+
+
 @pytest.mark.parametrize(("text", "frame", "theme"), [
     ("leave the heater turned on", "ToggleOn", "the heater"),
     ("leave the lamp switched off", "ToggleOff", "the lamp"),
