@@ -1982,8 +1982,7 @@ class Agent:
         person = binding.elements.get("recipient")
         put = asked     # to another, "ask Sam if I can ...": the speaker's "I" (back to the speaker: as said)
         if person not in (None, SPEAKER):
-            roles = self.scene.map.speaker_roles
-            put = asked_for(asked, f"the {spoken(roles[0])}" if roles else SENDER)
+            put = asked_for(asked, self.sender())
         whom = f" {person}" if person is not None and person != SPEAKER else ""
         outcome = self._act_words("say", [binding.elements.get("message", asked)], f'asked{whom} "{put}?"')
         if outcome.ok and whom:
@@ -2018,9 +2017,14 @@ class Agent:
 
     def passed_on(self, message: str) -> str:
         """A message told to someone other than the speaker, as the robot passes it on: the speaker's "I" said as
-        the speaker (:mod:`seal_cli.sim.relaying`; "the doctor" where the map calls the speaker so)."""
+        the speaker (:mod:`seal_cli.sim.relaying`)."""
+        return relayed(said_words(message), self.sender())
+
+    def sender(self) -> str:
+        """Who the robot passes a message or a question on from: "the doctor" where the map calls the speaker so,
+        else :data:`~seal_cli.sim.relaying.SENDER`."""
         roles = self.scene.map.speaker_roles
-        return relayed(said_words(message), f"the {spoken(roles[0])}" if roles else SENDER)
+        return f"the {spoken(roles[0])}" if roles else SENDER
 
     def in_words(self, text: str) -> str:
         """An answer as said to a person, not printed for the speaker's record: a thing's or place's id as its

@@ -54,10 +54,15 @@ def _third(match: re.Match[str], after_i: list[bool]) -> str:
     return THIRD_PERSON.get(low, word)
 
 
+def _first_person(text: str) -> bool:
+    """Whether ``text`` holds a first person singular word (:data:`THIRD_PERSON`'s keys)."""
+    return any(w.lower().replace("’", "'") in THIRD_PERSON for w in _WORD.findall(text))
+
+
 def relayed(words: str, sender: str = SENDER) -> str:
     """The message's words as the robot passes them on from ``sender`` (the module docstring): unchanged when they
     hold no first person singular."""
-    if not any(w.lower().replace("’", "'") in THIRD_PERSON for w in _WORD.findall(words)):
+    if not _first_person(words):
         return words
     after_i = [False]
     third = _WORD.sub(lambda m: _third(m, after_i), words)
@@ -77,7 +82,7 @@ def asked_for(question: str, sender: str = SENDER) -> str:
     """A question the robot asks someone for ``sender`` (the module docstring): the "I" after its auxiliary is the
     sender, any other first person singular the third; unchanged when it holds none."""
     words = question.split()
-    if not any(w.lower().replace("’", "'") in THIRD_PERSON for w in _WORD.findall(question)):
+    if not _first_person(question):
         return question
     for k in range(len(words) - 1):
         if words[k + 1] == "I":
