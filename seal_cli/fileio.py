@@ -376,7 +376,7 @@ def compose_documents(text: str, file: str, *, single: bool = False) -> list[Any
         documents = [yaml.compose(text, Loader=loader)] if single else list(yaml.compose_all(text, Loader=loader))
     except yaml.YAMLError as exc:
         raise yaml_problem(exc, text, file) from None
-    lines = YAML_BREAKS.split(text) if "!" in text else []  # a tag written in the file is read as YAML reads it
+    lines = _tag_lines(text)
     for root in documents:
         check_size(root, file, MAX_VALUES, lines)
     place_aliases(documents, text, loader)
@@ -384,6 +384,12 @@ def compose_documents(text: str, file: str, *, single: bool = False) -> list[Any
         for root in documents:
             merge_keys(root, file)
     return documents
+
+
+def _tag_lines(text: str) -> list[str]:
+    """A YAML text's lines for :func:`~seal_cli.yamlnodes.check_size` to read a tag written in the file as YAML reads
+    it; none when the text writes no tag (no "!")."""
+    return YAML_BREAKS.split(text) if "!" in text else []
 
 
 def read_yaml(path: str | Path, max_values: int | None = None, what: str = "file") -> Any:
@@ -403,8 +409,7 @@ def read_yaml(path: str | Path, max_values: int | None = None, what: str = "file
     try:
         if len(text) > limit:  # a value takes at least one character: a shorter file cannot hold more
             count_values(text, loader, str(path), limit, what)
-        check_size(yaml.compose(text, Loader=loader), str(path), limit,  # no alias bomb is expanded
-                   YAML_BREAKS.split(text) if "!" in text else [])
+        check_size(yaml.compose(text, Loader=loader), str(path), limit, _tag_lines(text))  # no alias bomb expanded
         return yaml.load(text, Loader=loader)  # noqa: S506 (a safe loader)
     except yaml.YAMLError as exc:
         raise yaml_problem(exc, text, str(path)) from None
