@@ -346,13 +346,14 @@ class Lexicon:
             return None                          # "take the lid off the pot": "take" is a unit alone
         return _particle_as_source(words, i, stop, by_particle)
 
-    def done_unit(self, done: str, particle: str) -> str | None:
+    def done_unit(self, done: str, particle: str, *, base: bool = False) -> str | None:
         """The unit of two words a past participle and a particle say ("turned" "on": "turn on", "switched off"),
         when the library has it; else None. Said after the thing of a split unit with that particle ("leave the
         heater *turned on*"), it is the unit's particle said with a verb of the same state, no word of the thing
-        (issue #13: the theme was "the heater turned")."""
+        (issue #13: the theme was "the heater turned"). ``base``: a participle spelt as its verb ("put", "shut")
+        counts too (a wish for a thing done, "I'd like the coat put on": ``requests._done_with_particle``)."""
         verb = verb_lemma(done) if done.isalpha() else None
-        if verb is None or done == verb or done not in participles(verb):
+        if verb is None or done == verb and not base or done not in participles(verb):
             return None
         return f"{verb} {particle}" if (verb, particle) in self.units.get(verb, ()) else None
 

@@ -1283,11 +1283,7 @@ def _done_with_particle(s: State, q: int) -> str | None:
     The participle and the particle are then one split particle (:func:`~seal_cli.language.rules.verbs.split_unit`)."""
     if not 1 <= q < len(s.words):
         return None
-    low, done = s.words[q].lower, s.words[q - 1].lower
-    verb = verb_lemma(done)
-    if verb is None or done not in participles(verb):
-        return None
-    return f"{verb} {low}" if (verb, low) in s.lexicon.units.get(verb, ()) else None
+    return s.lexicon.done_unit(s.words[q - 1].lower, s.words[q].lower, base=True)
 
 
 def _switched_by_unknown(s: State, i: int) -> Match | None:
