@@ -620,6 +620,10 @@ DEPARTING = frozenset(["out", "away", "off"])
 them the going is the time of the command, no frame (words36)."""
 STATE_PARTICLES = frozenset(["on", "off", "open", "shut"])
 """Words that end a question of state though lemminflect lists them as no adjective ("is the TV *on*?")."""
+KEEPING = frozenset(["keep"])
+""""*Keep* the door shut", "keep the heater switched on": a verb that holds a thing in a state, a unit of no frame,
+said with a thing and a word of state ending the clause, is the verb whose result the state is, as "leave the door
+open" is (rule ``a thing left in a state``): the robot brings the state about; it cannot watch over it."""
 STATE_ADVERBS = frozenset(["still", "already", "yet", "now", "really", "currently", "properly", "all", "fully",
                            "completely", "not"])
 """Adverbs said before the state asked ("is the light *still* on?", "is the fridge *not* open?"), part of it."""

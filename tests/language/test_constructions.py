@@ -4244,3 +4244,18 @@ def test_how_many_said_bare_counts_the_things_a_statement_named(
     named, where it said they are, as "count them" does. A place said first in the existential ("*on the counter*
     there are ...") is where they are."""
     assert_reads(text, want, library)
+
+
+@pytest.mark.parametrize(("text", "want"), [
+    ("keep the gate shut", [("Close", {"theme": "gate"})]),
+    ("please keep the radio switched off", [("ToggleOff", {"theme": "radio"})]),
+    ("could you keep the lamp turned on", [("ToggleOn", {"theme": "lamp"})]),
+    ("keep the wardrobe open", [("Open", {"theme": "wardrobe"})]),
+    ("keep the towel", None),                  # no state: "keep" is still no verb of the library
+])
+def test_a_state_to_keep_is_brought_about(
+        text: str, want: list[tuple[str, dict[str, str]]] | None, library: Library) -> None:
+    """words47: "keep the door shut" was refused ("keep" no verb of the library), "keep the heater switched on" a
+    ToggleOn of "the heater switched"; a verb of keeping, a thing and its state is the state's verb, as "leave the
+    door open" is."""
+    assert_reads(text, want, library)

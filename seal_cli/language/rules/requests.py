@@ -23,6 +23,7 @@ from seal_cli.language.english import (
     FOUND_OUT,
     HERE_WORDS,
     IMPERSONAL_WISHES,
+    KEEPING,
     INFORMATION,
     KNOW_WISHES,
     LEFT_ASKED,
@@ -1232,7 +1233,8 @@ def _resultative(s: State, i: int) -> Match | None:
     words = s.words
     low = words[i].lower
     verbs = s.lexicon.state_verbs
-    if not verbs or low not in verbs and (verb_lemma(low) or low) not in verbs:
+    keeps = (verb_lemma(low) or low) in KEEPING    # "keep the door shut": a verb of no unit, "on"/"off" its state
+    if not keeps and (not verbs or low not in verbs and (verb_lemma(low) or low) not in verbs):
         return None
     stop = s.cond_end(i + 1)                     # "leave the door and window open": "and" between nouns
     stop = next((j for j in range(i + 1, stop) if s.words[j].lower in ("and", "then") and not _nouns_joined(s, j)),
@@ -1241,11 +1243,12 @@ def _resultative(s: State, i: int) -> Match | None:
     while end > i + 1 and words[end - 1].lower in (",", "please", ".", "!"):
         end -= 1
     last = words[end - 1].lower if end > i + 2 else ""
-    if not last or last in SWITCHED_MEANS or not (is_adjective(last) or last in STATE_PARTICLES) or \
+    if not last or last in SWITCHED_MEANS and not keeps or not (is_adjective(last) or last in STATE_PARTICLES) or \
             words[end - 2].lower in PARTICLES:
         return None                              # "put two lettuce *plants* in the sink", "put one *back* clean"
     found = _state_after(s, i, 1, stop)
-    return found if found is not None and found.particle and found.particle[0] == end - 1 else None
+    said = end - 2 if _done_with_particle(s, end - 1) is not None else end - 1   # "switched *on*": both words
+    return found if found is not None and found.particle and found.particle[0] == said else None
 
 
 def _state_after(s: State, i: int, n: int, stop: int | None = None) -> Match | None:
@@ -2062,6 +2065,9 @@ RESULTATIVE = Rule("a thing left in a state", _resultative, (
     Example("get the soup hot, please", "hot", Tag.PARTICLE),
     Example("leave the window in the bedroom shut", "shut", Tag.PARTICLE),
     Example("leave the door and window open", "open", Tag.PARTICLE),
+    Example("keep the door shut", "keep", Tag.VERB),
+    Example("keep the heater switched on", "switched on", Tag.PARTICLE),
+    Example("please keep the gate closed", "closed", Tag.PARTICLE),
 ), None, "'leave X open', 'get X hot': open X, heat X (a verb that puts a thing in a state, and the state)")
 SWITCHED_BY_UNKNOWN = Rule("an unknown verb of a thing and on/off", _switched_by_unknown, (
     Example("flick the light on in the bedroom", "flick", Tag.VERB),
