@@ -4259,3 +4259,19 @@ def test_a_state_to_keep_is_brought_about(
     ToggleOn of "the heater switched"; a verb of keeping, a thing and its state is the state's verb, as "leave the
     door open" is."""
     assert_reads(text, want, library)
+
+
+@pytest.mark.parametrize(("text", "want"), [
+    ("hand me the fork no wait the spoon", [("Give", {"theme": "spoon", "recipient": "me"})]),
+    ("go to the garage no sorry the shed", [("Go", {"goal": "shed"})]),
+    ("pick up the towel actually no the blanket", [("Pick", {"theme": "blanket"})]),
+    ("put the mug on the shelf sorry I mean the desk", [("Place", {"theme": "mug", "goal": "desk"})]),
+    ("go to the porch and no wait go to the attic", [("Go", {"goal": "attic"})]),
+    ("switch off the radio no wait switch off the tv", [("ToggleOff", {"theme": "tv"})]),
+    ("bring me a tea no sugar", None),         # one word of marks: "no" is the determiner, as before
+])
+def test_a_correction_said_without_a_comma_replaces_the_phrase(
+        text: str, want: list[tuple[str, dict[str, str]]] | None, library: Library) -> None:
+    """words47: "bring me the cup no wait the mug" was refused at "no wait" (the marks read as a phrase no element
+    took); marks of two words or more with no comma before them correct as ", no wait, " does."""
+    assert_reads(text, want, library)

@@ -130,6 +130,7 @@ word is tagged as what it is (``INSIDE``), and the grammar reports the missing v
 INSIDE: tuple[Rule, ...] = (
     clauses.END_MARK,
     negatives.CORRECTED,
+    negatives.CORRECTED_UNJOINED,
     negatives.DENIED_AFTER,
     negatives.PROHIBITED_AFTER,
     question_tags.QUESTION_TAG,

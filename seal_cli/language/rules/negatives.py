@@ -204,8 +204,34 @@ def _corrected(s: State, i: int) -> Match | None:
     verb again or a phrase with a determiner ("but actually, *the* fork")."""
     words = s.words
     if words[i].lower in _CORRECTION_JOINS and not _marks_then_comma(words, i + 1):
-        return None
-    k, marks = i + 1, 0
+        return _correction(s, i, i + 1, bare=True) if _marks_said(words, i + 1) >= 2 else None
+    return _correction(s, i, i + 1)
+
+
+def _corrected_unjoined(s: State, i: int) -> Match | None:
+    """"bring me the cup *no wait* the mug", "grab the salt *actually no* the pepper", "put it in the sink *sorry I
+    mean* the dishwasher": a correction said with no comma before it (issue #13: refused, the marks lost). Only marks
+    of two words or more ("no" alone is a determiner: "a coffee no sugar"; "wait" alone a verb: "... and wait"), then
+    the phrase with a determiner or the clause's verb again, as after "and" (:func:`_corrected`)."""
+    words = s.words
+    if i == 0 or words[i - 1].lower == "," or words[i - 1].lower in _CORRECTION_JOINS:
+        return None                              # with a comma or a joint: the rule of ", no, NP"
+    return _correction(s, i, i, bare=True) if _marks_said(words, i) >= 2 else None
+
+
+def _marks_said(words: Sequence[Word], k: int) -> int:
+    """How many words of a correction's marks, with no comma between, start at ``k`` ("no wait": 2)."""
+    start = k
+    while (n := longest_phrase(words, k, CORRECTION_MARKS)) > 0:
+        k += n
+    return k - start if k < len(words) else 0
+
+
+def _correction(s: State, i: int, k: int, *, bare: bool = False) -> Match | None:
+    """The correction whose marks start at ``k``, its match consuming from ``i`` (the comma or joint before them,
+    or the marks themselves: ``bare``)."""
+    words = s.words
+    marks = 0
     while k < len(words):
         if words[k].lower == ",":
             k += 1
@@ -217,7 +243,8 @@ def _corrected(s: State, i: int) -> Match | None:
         if not n:
             break
         k, marks = k + n, marks + 1
-    if not marks or k >= len(words) or words[k - 1].lower != "," and words[k - 1].lower in ("no", "wait", "sorry"):
+    if not marks or k >= len(words) or not bare and words[k - 1].lower != "," and \
+            words[k - 1].lower in ("no", "wait", "sorry"):
         return None                              # "coffee, no sugar": "no" is its determiner
     if words[k].lower == "not":                  # ", no, *not the salt,* the pepper": the phrase denied, said again
         j = k + 1
@@ -229,7 +256,7 @@ def _corrected(s: State, i: int) -> Match | None:
     again = _clause_again(s, i, k)
     if again is not None:
         return again
-    if words[i].lower in _CORRECTION_JOINS and words[k].lower not in NP_OPENERS:
+    if (bare or words[i].lower in _CORRECTION_JOINS) and words[k].lower not in NP_OPENERS:
         return None                              # "and, I mean, *see* if Jane is there": a next step, no phrase
     if not s.np_starts(k) or s.verb_after(k) and words[k].lower not in ("the", "a", "an", "my", "your"):
         return None
@@ -327,7 +354,15 @@ CORRECTED = Rule("a phrase corrected", _corrected, (
     Example("switch the fan off, no, the heater", "fan", ""),             # after a split particle (words36)
     Example("go to the kitchen and no wait, go to the office", "kitchen", ""),   # after "and" (issue #13)
     Example("take the cup but sorry, the mug", "cup", ""),
+    Example("go to the kitchen and no wait go to the office", "kitchen", ""),   # no comma: two words of marks
 ), frozenset([","]) | _CORRECTION_JOINS, "', no, NP' after a phrase: the new phrase stands for the last one said")
+CORRECTED_UNJOINED = Rule("a phrase corrected, no comma", _corrected_unjoined, (
+    Example("bring me the plate no wait the bowl", "plate", ""),
+    Example("open the door no sorry the window", "door", ""),
+    Example("grab the salt actually no the pepper", "salt", ""),
+    Example("put it in the sink sorry I mean the dishwasher", "sink", ""),
+    Example("go to the hall no wait go to the porch", "hall", ""),
+), first_words(CORRECTION_MARKS), "'V NP no wait NP': a correction said without a comma, of two words or more")
 DENIED_AFTER = Rule("a phrase denied after the command", _denied_after, (
     Example("give me the big bowl, not the small one.", "small", ""),
     Example("bring the red mug, not the blue one, to the kitchen", "blue", ""),
