@@ -175,7 +175,8 @@ class Evoker:
         particle is always refused; "in", a particle too, only when the thing is said and where it goes is all the
         frames say of it beyond (a putting: "bring it *in*", "come *in*" go in) in the command's first frame; after
         a clause that opened a place it is "in there" ("open the microwave, put the cup *in* and close it": in the
-        microwave; it was a Place with no goal). "turn it *on*", "pick it *up*" are their units'; "a plate for
+        microwave; it was a Place with no goal), and after one that took the same thing to a place
+        (:meth:`carried_before`). "turn it *on*", "pick it *up*" are their units'; "a plate for
         an egg *to rest on*", "which room should I go *to*" are said before."""
         last = clause.items[-1] if clause.items else None
         if not isinstance(last, Word) or last.tag != "PARTICLE" or last.lower in unit.split()[1:] or \
@@ -185,7 +186,7 @@ class Evoker:
         path = last.lower in TO + FROM and last.lower not in PARTICLES
         putting = last.lower == "in" and bool(clause.objects) and bool(frames) and \
             all(self.types.roles(f) - {"theme"} == {"goal"} for f in frames)
-        if putting and self.opened_before():
+        if putting and (self.opened_before() or self.carried_before(clause)):
             clause.items[-1] = PP("in", NP(last.start, last.end, last, "place", there=True), last.start)
             return                           # "open the microwave, put the cup *in*": in there, the microwave
         if not path and not (putting and not self.frames):
@@ -207,6 +208,22 @@ class Evoker:
         return place is not None and any(
             action.name == "open" and place[1] in action.args
             for action in self.library.frame(self.frames[place[0]].frame).actions)
+
+    def carried_before(self, clause: Clause) -> bool:
+        """Whether the place said last before this clause is where the clause right before took the thing this
+        clause puts in: "take the tomato to the microwave(,) put *it* in" is in the microwave (words47: no goal). Not
+        "move the pan to the counter, put the tomato in" (another thing: in the pan), nor a place said earlier."""
+        place = self.reference.place_before(self.clause_frames)
+        if place is None or not self.clause_frames or not clause.objects:
+            return False
+        index = self.clause_frames - 1
+        goal, theme = self.frames[index].elements.get("goal"), self.frames[index].elements.get("theme")
+        if goal is None or theme is None or (goal.refers_to or (index, "goal")) != place or theme.kind != "thing":
+            return False
+        said = clause.objects[0]
+        if said.pronoun is not None:
+            return said.pronoun in ("it", "them")
+        return said.head is not None and noun_lemma(said.head.lower) == theme.head
 
     def there_asked(self, frames: Sequence[Frame], clause: Clause) -> None:
         """"go to the bedroom and tell me how many books *are there*", "... find out how many people there are": an

@@ -275,3 +275,21 @@ def test_a_participle_of_the_state_before_the_particle_is_no_word_of_the_thing(
         library: Library, text: str, frame: str, theme: str) -> None:
     """Issue #13: "leave the heater turned on" had the theme "the heater turned" (head "turned")."""
     assert _frames(text, library) == [(frame, {"theme": theme})]
+
+
+@pytest.mark.parametrize(("text", "place"), [
+    ("take the pear to the fridge put it in", "fridge"),               # run on, no comma
+    ("carry the pots to the cupboard, then put them in", "cupboard"),
+    ("bring the bread to the oven and put the bread in", "oven"),
+])
+def test_a_putting_in_said_last_after_the_thing_was_taken_to_a_place_is_in_there(
+        library: Library, text: str, place: str) -> None:
+    """words47: "take the tomato to the microwave put it in" had no goal; the place the clause before took the same
+    thing to is where "in" puts it (the goal refers to it). Another thing put in stays without a goal (it may go in
+    the thing moved: "move the pan to the shelf, put the egg in")."""
+    parse = parse_command(text, library)
+    assert [f.frame for f in parse.frames] == ["Bring", "Place"]
+    goal = parse.frames[1].elements["goal"]
+    assert goal.refers_to == (0, "goal") and goal.head == place
+    other = parse_command("take the pear to the fridge, put the plum in", library)
+    assert "goal" not in other.frames[1].elements
