@@ -2017,8 +2017,8 @@ class Agent:
 
     def passed_on(self, message: str) -> str:
         """A message told to someone other than the speaker, as the robot passes it on: the speaker's "I" said as
-        the speaker (:mod:`seal_cli.sim.relaying`)."""
-        return relayed(said_words(message), self.sender())
+        the speaker, a "he"/"she" that can only be the hearer said as "you" (:mod:`seal_cli.sim.relaying`)."""
+        return relayed(said_words(message), self.sender(), hearer=True)
 
     def sender(self) -> str:
         """Who the robot passes a message or a question on from: "the doctor" where the map calls the speaker so,

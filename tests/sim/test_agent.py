@@ -973,6 +973,7 @@ def test_a_balcony_is_said_on_and_a_room_in(library: Library, text: str, said: s
     ("studio", "tell me I'm ready", 'said "I\'m ready"'),              # to the speaker: their own words back
     ("clinic", "tell Victor I'm running late", 'said "the doctor says they\'re running late"'),
     ("studio", "ask Sam if I can borrow his book", 'asked Sam "can the person who sent me borrow his book?"'),
+    ("studio", "tell Sam I will meet him", 'said "the person who sent me says they will meet you"'),   # words47
 ])
 def test_a_message_passed_on_says_whose_it_is(library: Library, house: str, text: str, said: str) -> None:
     """Nora heard "I'm ready" from the robot (words45): the sender's "I" is passed on as the sender."""

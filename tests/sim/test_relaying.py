@@ -39,3 +39,23 @@ def test_the_sender_is_named_when_known() -> None:
 def test_a_question_asked_for_the_sender_names_them_where_it_said_i(question: str, asked: str) -> None:
     """"ask Sam if I can borrow his book" asked Sam "can I borrow his book?", the robot's "I" (words45)."""
     assert asked_for(question) == asked
+
+
+@pytest.mark.parametrize(("words", "passed_on"), [
+    ("I will meet him", "the person who sent me says they will meet you"),
+    ("I'll see her at the station", "the person who sent me says they'll see you at the station"),
+    ("I found her glasses", "the person who sent me says they found your glasses"),
+    ("I will ring her tomorrow", "the person who sent me says they will ring you tomorrow"),
+    ("she is late and her bus has gone", "you are late and your bus has gone"),
+    ("he needs his coat", "you need your coat"),
+    ("Bea is waiting for him", "Bea is waiting for him"),          # someone else is named: "him" may be anyone
+    ("dinner is ready", "dinner is ready"),
+])
+def test_a_he_or_she_in_a_relayed_message_is_the_hearer(words: str, passed_on: str) -> None:
+    """words47: "tell Sam I will meet him" gave Sam "... they will meet him"; to the one it is passed on to, a he or
+    she no one else in the message can be is "you", the verb agreeing."""
+    assert relayed(words, hearer=True) == passed_on
+
+
+def test_without_a_hearer_the_third_person_is_kept() -> None:
+    assert relayed("I will meet him") == "the person who sent me says they will meet him"
