@@ -503,6 +503,10 @@ IMPERSONAL_WISHES = frozenset(f"{it} be {really}{adjective} to have" for it in (
 on"): a wish as "I'd like" is (words43: refused as a statement)."""
 REQUESTS = REQUESTS | IMPERSONAL_WISHES
 REQUEST_MEANS = "bring"
+HELP_MEANS = "come"
+""""*I need a hand*", "we could use some help in the garage": help wished for with no deed said is the robot coming to
+whoever asks, or to the place said ("come to me", "come to the garage": a unit of Go in the standard library); they
+will say what the help is for (words47: a Bring of "a hand")."""
 WISHED_PLACED = frozenset([*(f"{who} {wish}" for who in ("i", "we") for wish in ("want", "would like")),
                            "i'd like", "we'd like",
                            *(f"{who} really {wish}" for who in ("i", "we") for wish in ("want", "need")),

@@ -4275,3 +4275,16 @@ def test_a_correction_said_without_a_comma_replaces_the_phrase(
     """words47: "bring me the cup no wait the mug" was refused at "no wait" (the marks read as a phrase no element
     took); marks of two words or more with no comma before them correct as ", no wait, " does."""
     assert_reads(text, want, library)
+
+
+@pytest.mark.parametrize(("text", "want"), [
+    ("I could use a hand", [("Go", {"goal": "me"})]),
+    ("we need some help in the cellar, please", [("Go", {"goal": "cellar"})]),
+    ("I need help over here", [("Go", {"goal": "over here"})]),
+    ("I need a ladder", [("Bring", {"theme": "ladder", "recipient": "me"})]),
+])
+def test_help_wished_for_with_no_deed_is_coming_to_whoever_asks(
+        text: str, want: list[tuple[str, dict[str, str]]] | None, library: Library) -> None:
+    """words47: "I need a hand" was a Bring of "a hand"; with no deed said, the robot comes to the speaker (or to the
+    place said) to learn what the help is for."""
+    assert_reads(text, want, library)

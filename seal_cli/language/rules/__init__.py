@@ -104,6 +104,7 @@ CLAUSE_START: tuple[Rule, ...] = (
     requests.OBLIGED_RULE,
     requests.PERSON_NEEDING,
     requests.HELP_WISHED,
+    requests.HELP_ALONE,
     requests.REQUEST,
     requests.REQUEST_FOR,
     requests.WISH_OF,

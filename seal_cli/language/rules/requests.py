@@ -21,6 +21,7 @@ from seal_cli.language.english import (
     ENSURED,
     FINITE,
     FOUND_OUT,
+    HELP_MEANS,
     HERE_WORDS,
     IMPERSONAL_WISHES,
     KEEPING,
@@ -1074,6 +1075,34 @@ def _help_wished(s: State, i: int) -> Match | None:
     return Match(n + m, (merge(s.words, i, n + m, Tag.POLITE),), expect=True)
 
 
+def _help_alone(s: State, i: int) -> Match | None:
+    """"*I need a hand*", "I could use some help, please", "we need a hand in the garage": a wish for help
+    (``REQUESTS``, then :data:`_HELP`) with no deed said is coming to whoever asks (``HELP_MEANS``: "come to me"), or
+    to the one place said after it ("in the garage"). Help with a thing ("I need help with the box") or for a deed
+    ("... carrying the bags": :func:`_help_wished`) is another's."""
+    words = s.words
+    n = _phrase(s, i, REQUESTS)
+    m = _phrase(s, i + n, _HELP) if n else 0
+    k = i + n + m
+    if not m or HELP_MEANS not in s.lexicon.units:
+        return None
+    end = _sentence_end(s, k)
+    while end > k and words[end - 1].lower in (",", "please", "now"):
+        end -= 1
+    verb = Word(s.text_of(words[i].start, words[k - 1].end), words[i].start, words[k - 1].end, Tag.VERB, HELP_MEANS)
+    if end == k:                                 # "I need a hand": come to me
+        at = words[k - 1].end
+        return Match(n + m, (verb, _unsaid(at, Tag.PREP, PREPOSITIONS["to"], "to"), _unsaid(at, Tag.PRON, None,
+                                                                                               _SPEAKER)),
+                     expect=False, verb=HELP_MEANS, using=False)
+    if match_phrase(words, k, HERE_WORDS) == end - k:
+        return Match(n + m, (verb,), expect=False, verb=HELP_MEANS, using=False)   # "... help here": come here
+    if PREPOSITIONS.get(words[k].lower) not in LOCATED or not s.np_starts(k + 1) or \
+            any(s.verb_at(j) is not None or words[j].lower in (",", "and", "then") for j in range(k + 1, end)):
+        return None
+    return Match(n + m, (verb,), expect=False, verb=HELP_MEANS, using=False)
+
+
 _ASKED_FOR = frozenset(["can", "could", "may", "might"])
 _HAVING = frozenset(["have", "get"])
 
@@ -2124,6 +2153,12 @@ HELP_WISHED = Rule("a wish for help doing", _help_wished, (
     Example("I could use some help finding my keys.", "I could use some help", Tag.POLITE),
     Example("I need a hand carrying the groceries to the car", "I need a hand", Tag.POLITE),
 ), _REQUEST_FIRST, "'I could use some help V-ing X': V X")
+HELP_ALONE = Rule("help wished for, no deed said", _help_alone, (
+    Example("I need a hand", "I need a hand", Tag.VERB),
+    Example("we could use some help in the garage", "we could use some help", Tag.VERB),
+    Example("I need some help here, please", "I need some help", Tag.VERB),
+    Example("I could use a hand", "I could use a hand", Tag.VERB),
+), _REQUEST_FIRST, "'I need a hand (in the garage)': come to me (to the garage)")
 REQUEST_FOR = Rule("may a person have a thing", _request_for, (
     Example("Can Jane have the salt?", "Jane", Tag.NAME),
     Example("could Robin get a towel from the bathroom?", "could", Tag.VERB),
