@@ -4288,3 +4288,16 @@ def test_help_wished_for_with_no_deed_is_coming_to_whoever_asks(
     """words47: "I need a hand" was a Bring of "a hand"; with no deed said, the robot comes to the speaker (or to the
     place said) to learn what the help is for."""
     assert_reads(text, want, library)
+
+
+@pytest.mark.parametrize(("text", "want"), [
+    ("where did the cat hide the ball?", [("Find", {"theme": "ball"})]),
+    ("where did the puppy drag my slipper", [("Find", {"theme": "slipper"})]),
+    ("where did our dog bury its bone", [("Find", {"theme": "bone"})]),
+    ("where did the cat food go", [("Find", {"theme": "food"})]),         # no verb and object: as before
+])
+def test_where_something_no_person_put_a_thing_is_finding_the_thing(
+        text: str, want: list[tuple[str, dict[str, str]]], library: Library) -> None:
+    """words47: "where did the cat put the ball" was a Find of the cat and a Place of the ball, "where did the cat
+    hide the ball" refused at "hide": the subject need not be a person."""
+    assert_reads(text, want, library)

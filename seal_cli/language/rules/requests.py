@@ -169,7 +169,8 @@ def _where_did(s: State, i: int) -> Match | None:
     where, auxiliaries, subjects = WHERE_DID
     if i + 4 >= len(words) or WHERE_MEANS not in s.lexicon.units or words[i + 1].lower not in auxiliaries:
         return None
-    v = i + 3 if words[i + 2].lower in subjects or _person_word(s, i + 2) else _person_said(s, i + 2)
+    v = i + 3 if words[i + 2].lower in subjects or _person_word(s, i + 2) else \
+        _person_said(s, i + 2) or _subject_said(s, i + 2)
     if v is None or v + 1 >= len(words) or not s.np_starts(v + 1):
         return None
     said, lemma = words[v].lower, verb_lemma(words[v].lower)
@@ -196,6 +197,27 @@ def _person_said(s: State, k: int) -> int | None:
         if not low.isalpha() or low in CLOSED:
             return None
         if (noun_lemma(low) or low) in s.lexicon.people:
+            return h + 1
+    return None
+
+
+def _subject_said(s: State, k: int) -> int | None:
+    """Where a noun phrase of no person at ``k`` that opens with a determiner or a possessive ends before a verb of
+    English and its object ("where did *the cat* hide the ball?", "where did *our dog* bury its bone": words47, a
+    Find of the cat and a Place of the ball, or refused at the verb): the verb's index, when the word after one to
+    three words of the phrase is a verb's base form or participle with a phrase after it; None otherwise."""
+    words = s.words
+    j = k
+    while j < len(words) and words[j].lower in NP_OPENERS:
+        j += 1
+    if j == k:
+        return None
+    for h in range(j, min(j + 3, len(words) - 2)):
+        low = words[h].lower
+        if not low.isalpha() or low in CLOSED:
+            return None
+        verb = words[h + 1].lower
+        if in_verb_tables(verb) and verb not in CLOSED and verb_lemma(verb) is not None and s.np_starts(h + 2):
             return h + 1
     return None
 
@@ -2039,6 +2061,8 @@ WHERE_DID_RULE = Rule("where did I leave", _where_did, (
     Example("where have you put my glasses", "where have you put", Tag.VERB),
     Example("Where has Tom left the keys?", "Where has Tom left", Tag.VERB),
     Example("where does my little brother keep his shoes", "where does my little brother keep", Tag.VERB),
+    Example("where did the cat hide the ball", "where did the cat hide", Tag.VERB),        # no person (words47)
+    Example("where did our dog bury its bone", "where did our dog bury", Tag.VERB),
 ), WHERE_DID[0], "'where did I leave X', 'where do we keep X': find X")
 SEEN_ASKED_RULE = Rule("have you seen", _seen_asked, (
     Example("can you see my phone anywhere?", "see", Tag.VERB),
