@@ -352,3 +352,19 @@ def test_a_vocabulary_name_no_terminal_shows_is_refused_at_its_entry(tmp_path: P
     (tmp_path / "v.yaml").write_text(text, encoding="utf-8")
     with pytest.raises(SealError, match=said):
         load_vocabulary(tmp_path / "v.yaml")
+
+
+@pytest.mark.parametrize(("text", "theme"), [
+    ("take robin the cup", "the cup"),
+    ("bring morgan a coffee", "a coffee"),
+    ("could you take grace her glasses", "her glasses"),
+])
+def test_a_lower_case_name_of_the_world_before_a_second_object_is_the_recipient(
+        library: Library, tmp_path: Path, text: str, theme: str) -> None:
+    """words47 (issue #13): a lower-case word the world names as a person ("robin", "grace": nouns to the dictionary)
+    said after "take"/"bring" and before a second phrase is the person the thing is for."""
+    path = tmp_path / "v.yaml"
+    path.write_text("classes: [cup]\npeople: [Robin, Morgan, Grace]\n")
+    (bring,) = parse_command(text, library, load_vocabulary(path)).frames
+    assert bring.frame == "Bring"
+    assert (bring.elements["theme"].text, bring.elements["recipient"].kind) == (theme, "person")
