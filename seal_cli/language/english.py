@@ -622,6 +622,11 @@ OBJECT_PARTICLES = frozenset(["off", "up", "down", "out"])
 DEPARTING = frozenset(["out", "away", "off"])
 """Particles that make a verb of going a leaving ("before you go *out*", "when you head *off*"): with nothing after
 them the going is the time of the command, no frame (words36)."""
+FOUND_THERE = frozenset(["you'll find", "you will find", "you can find", "you should find", "you'd find",
+                         "you'll see", "you will see"])
+""""*At the pantry you'll find* some crisps, bring them to Sam": what the robot will find at a place said first is
+said to be there, as "at the pantry there are some crisps" says — a statement beside the command naming where the
+thing is (words47: a Find before the Bring, the place read as "the pantry you'll")."""
 STATE_PARTICLES = frozenset(["on", "off", "open", "shut"])
 """Words that end a question of state though lemminflect lists them as no adjective ("is the TV *on*?")."""
 KEEPING = frozenset(["keep"])

@@ -20,7 +20,7 @@ from dataclasses import replace
 from seal_cli.frames.library import Library
 from seal_cli.frames.model import Frame
 from seal_cli.language.element_types import Types
-from seal_cli.language.english import BESIDE, LOCATED, NP_OPENERS, PREPOSITIONS, PRONOUNS, is_room_word
+from seal_cli.language.english import BESIDE, FOUND_THERE, LOCATED, NP_OPENERS, PREPOSITIONS, PRONOUNS, is_room_word
 from seal_cli.language.lexicon import Mention, Word, mentions, noun_lemma
 from seal_cli.language.morphology import is_plural, parts_of_speech, plural_only
 from seal_cli.language.syntax import NP
@@ -348,8 +348,9 @@ class Reference:
             m = replace(m, end=end, head=words[-2])
         opening = self.text[span[0]:m.start].lower().split()
         between = self.text[m.end:said.start].lower().replace("'s", " 's").split()
-        if not opening or " ".join(opening) not in (*LOCATED, *BESIDE) or between[:1] != ["there"] or \
-                len(between) < 2 or between[1] not in ("is", "are", "'s", "was", "were"):
+        found = " ".join(between).replace(" 's", "'s") in FOUND_THERE     # "... *you'll find* some crisps" (words47)
+        if not opening or " ".join(opening) not in (*LOCATED, *BESIDE) or not found and (
+                between[:1] != ["there"] or len(between) < 2 or between[1] not in ("is", "are", "'s", "was", "were")):
             return None
         return m
 

@@ -13,6 +13,7 @@ from collections.abc import Iterable, Mapping, Sequence
 from typing import TYPE_CHECKING
 
 from seal_cli.language.english import (
+    FOUND_THERE,
     ADDITIVES,
     AND_WORDS,
     BASE_FORM_SUBJECTS,
@@ -777,12 +778,29 @@ class State:
             return 0
         for k in range(i + n + 1, len(words) - 1):
             low = words[k].lower
-            if low == "there" and words[k + 1].lower in BE_WORDS:
-                return k
+            if low == "there" and words[k + 1].lower in BE_WORDS or longest_phrase(words, k, FOUND_THERE):
+                return k                          # "... *you'll find* some crisps": what is there (words47)
             if not low.isalpha() or low in END_MARKS or self.verb_at(k) is not None and \
                     words[k - 1].lower not in NP_OPENERS:
                 return 0                          # "in the *study* there are three mugs": a noun (words26)
         return 0
+
+    def found_there(self, i: int) -> bool:
+        """Whether the sentence at ``i`` says what the robot will find at a place said first, then a comma ("*at the
+        pantry you'll find some crisps*, bring them to Sam": ``english.FOUND_THERE``, a statement; words47)."""
+        there = self._there_after_place(i)
+        found = longest_phrase(self.words, there, FOUND_THERE) if there else 0
+        return bool(found) and bool(self._found_said(there + found))
+
+    def _found_said(self, k: int) -> int:
+        """Where the phrase of what is found, at ``k``, ends before a comma ("you'll find *some crisps*, bring them"),
+        no verb in it (0: none)."""
+        words = self.words
+        if not self.np_starts(k):
+            return 0
+        end = next((j for j in range(k + 1, len(words)) if words[j].lower in (",", ";") or words[j].lower in END_MARKS
+                    or self.verb_at(j) is not None and words[j - 1].lower not in NP_OPENERS), 0)
+        return end if end and words[end].lower in (",", ";") else 0
 
     def aside(self, i: int) -> Match | None:
         """A sentence said beside the command, with no verb of the library, at the start of a sentence
@@ -799,7 +817,8 @@ class State:
             return None                                  # inside a sentence
         there = self._there_after_place(i)
         if there:
-            stated = self.statement_at(there)
+            found = longest_phrase(words, there, FOUND_THERE)
+            stated = self._found_said(there + found) if found else self.statement_at(there)
             if stated and stated < len(words) and words[stated].lower in (",", ";") and self.verb_after(stated + 1):
                 return self._aside(i, stated + 1 - i, (words[i].start, words[stated - 1].end))
                 # "on the sofa there's a blanket, bring it to me": the place said first is the statement's (words24)

@@ -4301,3 +4301,19 @@ def test_where_something_no_person_put_a_thing_is_finding_the_thing(
     """words47: "where did the cat put the ball" was a Find of the cat and a Place of the ball, "where did the cat
     hide the ball" refused at "hide": the subject need not be a person."""
     assert_reads(text, want, library)
+
+
+@pytest.mark.parametrize(("text", "want"), [
+    ("at the desk you'll find a stapler, bring it to me",
+     [("Bring", {"theme": "stapler", "recipient": "me", "source": "desk"})]),
+    ("in the hall you will find some boots, take them to the porch",
+     [("Bring", {"theme": "boot", "goal": "porch", "source": "hall"})]),
+    ("on the shelf you'll see a vase, grab it", [("Pick", {"theme": "vase", "source": "shelf"})]),
+    ("in the hall you will find some boots", [("Find", {"theme": "boot"})]),   # no command after: the finding
+])
+def test_what_the_robot_will_find_at_a_place_said_first_is_where_it_is(
+        text: str, want: list[tuple[str, dict[str, str]]], library: Library) -> None:
+    """words47 (paraphrases22): "at the pantry you'll find some pringles, bring them to charlie" was a Find of the
+    pringles in "the pantry you'll" before the Bring; said before a comma and a command, it says where they are, as
+    "at the pantry there are some pringles" does."""
+    assert_reads(text, want, library)
