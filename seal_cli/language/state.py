@@ -260,6 +260,11 @@ def _infinitive(word: Word, n: int = 1) -> bool:
                                       gerund_lemma(low) is not None)    # "prior to *turning* on a lamp"
 
 
+_ASKING_MODALS = frozenset(["can", "could", "would", "will"])
+"""Modals that open a request put as a question ("*can you* guide her there"): before "you" and a verb of the
+library, inside a statement said without punctuation, the command begins (words47)."""
+
+
 def lower_case_name(words: Sequence[Word], k: int) -> bool:
     """Whether word ``k``, in lower case, is a person's name as a subject (words24; the caller says where a subject
     stands: opening a statement, or after a condition's subordinator, "when *sam* gets home"): no dictionary lists
@@ -682,6 +687,8 @@ class State:
         if low in ("and", "then"):
             k = m + 1 + (m + 1 < len(words) and words[m + 1].lower == "then")
             return k < len(words) and self._base_unit(k)
+        if low in _ASKING_MODALS and m + 2 < len(words) and words[m + 1].lower == "you" and self._base_unit(m + 2):
+            return True                          # "robin is at the sofa *can you* guide her there" (words47)
         return low not in CLOSED and words[m - 1].lower in ("there", "here") and self._base_unit(m) and \
             self.np_starts(m + 1)
 
@@ -828,6 +835,10 @@ class State:
         if stated and stated < len(words) and words[stated].lower in (",", ";") and self._command_follows(stated + 1):
             but = stated + 1 < len(words) and words[stated + 1].lower == "but"
             return self._aside(i, stated + 1 + but - i, (words[i].start, words[stated - 1].end))
+        if stated and stated < len(words) and words[stated].lower not in ("and", "then") and \
+                self.command_resumes(stated):
+            return self._aside(i, stated - i, (words[i].start, words[stated - 1].end))
+            # "robin is at the sofa *can you* guide her there": the command said on without a mark (words47)
             # "Bogdan has a question; answer it for him"; "she needs her pills, they're upstairs, fetch them"
         seen = self._seen_question(i)
         if seen:

@@ -4317,3 +4317,18 @@ def test_what_the_robot_will_find_at_a_place_said_first_is_where_it_is(
     pringles in "the pantry you'll" before the Bring; said before a comma and a command, it says where they are, as
     "at the pantry there are some pringles" does."""
     assert_reads(text, want, library)
+
+
+@pytest.mark.parametrize(("text", "want"), [
+    ("noor is in the shed can you bring her a torch",
+     [("Bring", {"theme": "torch", "recipient": "noor"})]),
+    ("the bin is full could you take it to the garage", [("Bring", {"theme": "bin", "goal": "garage"})]),
+    ("nadia is on the porch she wants to go to the attic could you take her there",
+     [("Guide", {"theme": "nadia", "source": "porch", "goal": "attic"})]),
+    ("the gate is open close it", None),        # a bare verb, no question: refused as a statement, as before
+])
+def test_a_statement_run_on_into_a_request_put_as_a_question_is_a_remark(
+        text: str, want: list[tuple[str, dict[str, str]]], library: Library) -> None:
+    """words47 (paraphrases22): "robin is at the sofa she wants to go to the bathroom can you guide her there" was
+    refused as a statement; "can you" and a verb of the library start the command inside it, as a comma would."""
+    assert_reads(text, want, library)
