@@ -481,6 +481,8 @@ REQUESTS = frozenset(["i'd like", "i would like", "i should like", "i'd love", "
                       "we'd love", "we would love", "i wouldn't mind", "i would not mind", "we wouldn't mind",
                       "we would not mind",
                       "i fancy", "i'd fancy", "i would fancy", "i quite fancy", "i'd quite fancy", "i really fancy",
+                      *(f"{who} {really}appreciate" for who in ("i'd", "i would", "we'd", "we would")
+                        for really in ("", "really ", "much ")),
                       *(f"{modal} {who} {adverb} {verb}" for modal in ("can", "could", "may") for who in ("i", "we")
                         for adverb in ("possibly", "just", "please just") for verb in ("have", "get")),
                       *(f"{chance} {wish}" for chance in ("any chance", "is there any chance", "is there a chance")
@@ -493,7 +495,8 @@ REQUESTS = frozenset(["i'd like", "i would like", "i should like", "i'd love", "
 recipient). Asked as a trouble to the hearer, a thing after "for" ("*might I trouble you for* a glass of water",
 words26), as politeness asks a deed after "to" ("could I trouble you to ..."). A wish said as not minding ("*I
 wouldn't mind* a biscuit") or as a chance asked ("*any chance I could have* a cushion?", "*any chance of* a cup of
-tea?") is one too, and so are "I fancy X", and "could I possibly have X" (words30)."""
+tea?") is one too, and so are "I fancy X", and "could I possibly have X" (words30), and "I'd (really) appreciate X"
+(words47; "I'd appreciate it if you ..." is the polite frame's, read first)."""
 APPROVAL = frozenset(["great", "nice", "good", "lovely", "wonderful", "helpful", "perfect", "fantastic", "amazing",
                       "awesome", "brilliant", "handy", "ideal"])
 """Adjectives of approval in a wish said impersonally ("it would be *great* to have ..."). English, not any corpus's."""

@@ -4332,3 +4332,17 @@ def test_a_statement_run_on_into_a_request_put_as_a_question_is_a_remark(
     """words47 (paraphrases22): "robin is at the sofa she wants to go to the bathroom can you guide her there" was
     refused as a statement; "can you" and a verb of the library start the command inside it, as a comma would."""
     assert_reads(text, want, library)
+
+
+@pytest.mark.parametrize(("text", "want"), [
+    ("I want the gate left open", [("Open", {"theme": "gate"})]),
+    ("we'd like the radio kept off", [("ToggleOff", {"theme": "radio"})]),
+    ("I want the plates left on the shelf", [("Place", {"theme": "plate", "goal": "shelf"})]),   # a place: as before
+    ("I'd really appreciate a blanket", [("Bring", {"theme": "blanket", "recipient": "me"})]),
+    ("I'd appreciate it if you could shut the gate", [("Close", {"theme": "gate"})]),
+])
+def test_a_state_wished_kept_or_left_and_a_thing_appreciated(
+        text: str, want: list[tuple[str, dict[str, str]]], library: Library) -> None:
+    """words47: "I want the door left open" was a Bring of "the door left open", "I'd really appreciate a cup of
+    coffee" refused ("appreciate" no verb of the library)."""
+    assert_reads(text, want, library)

@@ -24,8 +24,8 @@ from seal_cli.language.english import (
     HELP_MEANS,
     HERE_WORDS,
     IMPERSONAL_WISHES,
-    KEEPING,
     INFORMATION,
+    KEEPING,
     KNOW_WISHES,
     LEFT_ASKED,
     LET_KNOW,
@@ -82,6 +82,7 @@ from seal_cli.language.morphology import (
 )
 from seal_cli.language.rule import START, Example, Match, Rule
 from seal_cli.language.rules.politeness import asked_again_at
+from seal_cli.language.rules.verbs import left_in_state
 from seal_cli.language.state import CLOSED, State, first_words, longest_phrase, lower_case_name, match_phrase, merge
 from seal_cli.language.tags import Tag
 from seal_cli.language.tokens import Word, capitalised
@@ -1321,6 +1322,8 @@ def _state_after(s: State, i: int, n: int, stop: int | None = None) -> Match | N
     done = _done_with_particle(s, q)
     if done is not None:                         # "I'd like the heater *turned on*": the particle's unit, said whole
         unit, q = done, q - 1
+    elif q - 1 > k and left_in_state(s, q - 1):
+        q -= 1                                   # "I want the door *left open*": the state, kept (words47)
     before = words[q - 1].lower
     if unit is None or before in NP_OPENERS or before in PREPOSITIONS or \
             any(words[p].lower in BE_WORDS or words[p].lower in (",", "and", "then") and not _nouns_joined(s, p) or
@@ -2107,6 +2110,7 @@ WISHED_STATE = Rule("a wish for a thing's state", _wished_state, (
     Example("I want the lights off, please", "off", Tag.PARTICLE),
     Example("I need the door open", "I need", Tag.VERB),
     Example("I'd like the heater turned on", "turned on", Tag.PARTICLE),
+    Example("I want the door left open", "left open", Tag.PARTICLE),
     Example("we'd like the lights on in the living room", "on", Tag.PARTICLE),
     Example("I'd like my tea hot", "hot", Tag.PARTICLE),
     Example("I want the door open and the radio on", "open", Tag.PARTICLE),

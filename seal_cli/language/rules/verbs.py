@@ -7,6 +7,7 @@ from seal_cli.language.english import (
     DEPARTURE_MEANS,
     END_MARKS,
     FOLLOW_ASKED,
+    KEEPING,
     PARTICLES,
     PATH_ALONE,
     PATH_MEANS,
@@ -35,10 +36,23 @@ def _split_particle(s: State, i: int) -> Match | None:
     return Match(1, (Word(w.text, w.start, w.end, Tag.PARTICLE, unit, w.lower),))
 
 
+def left_in_state(s: State, j: int) -> bool:
+    """Whether the word at ``j`` is the participle of a verb that leaves or keeps a thing in a state ("left", "kept":
+    :attr:`Lexicon.state_verbs`, ``english.KEEPING``) said before the state ("I want the door *left* open", "I'd like
+    the lamp *kept* on"): with the state, one split particle (:func:`split_unit`)."""
+    low = s.words[j].lower
+    lemma = verb_lemma(low) if low.isalpha() else None
+    return lemma is not None and low != lemma and low in participles(lemma) and \
+        (lemma in s.lexicon.state_verbs or lemma in KEEPING)
+
+
 def split_unit(s: State, i: int, unit: str) -> int:
     """How many words the split particle of ``unit`` at ``i`` is: two when they are the unit's verb in a past form and
     its particle ("the heater *turned on*", a wish for a state: ``requests._done_with_particle``), else one."""
     parts = unit.split()
+    if i + 1 < len(s.words) and s.words[i + 1].lower.isalpha() and left_in_state(s, i) and \
+            not s.np_starts(i + 2):
+        return 2                                # "I want the door *left open*" (words47); not "left *in the sink*"
     if len(parts) != 2 or i + 1 >= len(s.words) or s.words[i + 1].lower != parts[1]:
         return 1
     done = s.words[i].lower                     # "leave the heater *turned on*": another verb of the state
