@@ -1285,7 +1285,8 @@ def _resultative(s: State, i: int) -> Match | None:
     words = s.words
     low = words[i].lower
     verbs = s.lexicon.state_verbs
-    keeps = (verb_lemma(low) or low) in KEEPING    # "keep the door shut": a verb of no unit, "on"/"off" its state
+    keeps = (verb_lemma(low) or low) in KEEPING and not (i and words[i - 1].lower == "to")
+    # "keep the door shut": a verb of no unit, "on"/"off" its state; not a purpose ("... *to keep* it cold")
     if not keeps and (not verbs or low not in verbs and (verb_lemma(low) or low) not in verbs):
         return None
     stop = s.cond_end(i + 1)                     # "leave the door and window open": "and" between nouns
