@@ -4346,3 +4346,16 @@ def test_a_state_wished_kept_or_left_and_a_thing_appreciated(
     """words47: "I want the door left open" was a Bring of "the door left open", "I'd really appreciate a cup of
     coffee" refused ("appreciate" no verb of the library)."""
     assert_reads(text, want, library)
+
+
+@pytest.mark.parametrize(("text", "want"), [
+    ("I want the shed locked", None),                  # no frame locks: refused, no Bring of "the shed locked"
+    ("we'd like the eggs poached", None),
+    ("I want the shed closed", [("Close", {"theme": "shed"})]),
+    ("I want the worn shoes", [("Bring", {"theme": "shoe", "recipient": "me"})]),   # a participle before the noun
+])
+def test_a_wish_for_a_deed_no_frame_does_is_refused(
+        text: str, want: list[tuple[str, dict[str, str]]] | None, library: Library) -> None:
+    """words47: "I want the door locked" was a Bring of "the door locked" to the speaker, silently wrong; a wish whose
+    phrase ends in the participle of a verb no frame lists asks for a deed the robot cannot do."""
+    assert_reads(text, want, library)

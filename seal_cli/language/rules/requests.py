@@ -1071,12 +1071,26 @@ def _request(s: State, i: int) -> Match | None:
     n = _phrase(s, i, REQUESTS)
     if not n or REQUEST_MEANS not in s.lexicon.units or not s.np_starts(i + n) or \
             words[i + n].lower in ("you", "to") or s.verb_at(i + n) is not None or \
-            not _sentence_asks_nothing_else(s, i + n):
+            not _sentence_asks_nothing_else(s, i + n) or _done_by_no_unit(s, i + n):
         return None
     end = words[i + n - 1].end
     text = s.text_of(words[i].start, end) or " ".join(w.text for w in words[i:i + n])
     return Match(n, (Word(text, words[i].start, end, Tag.VERB, REQUEST_MEANS),
                      _unsaid(end, Tag.PRON, None, _SPEAKER)), expect=False, verb=REQUEST_MEANS, using=False)
+
+
+def _done_by_no_unit(s: State, k: int) -> bool:
+    """Whether the phrase wished for at ``k`` ends its sentence with the past participle of a verb no frame lists ("I
+    want the door *locked*", "I'd like the eggs *poached*"): a wish for a deed the robot cannot do, no thing to bring
+    (words47: a Bring of "the door locked"); the request is not read, and the sentence is refused as a statement."""
+    words = s.words
+    end = _sentence_end(s, k)
+    while end > k + 1 and words[end - 1].lower in (",", "please"):
+        end -= 1
+    low = words[end - 1].lower
+    lemma = verb_lemma(low) if low.isalpha() and end - 1 > k else None
+    return lemma is not None and lemma != low and low in participles(lemma) and in_verb_tables(lemma) and \
+        lemma not in s.lexicon.units and words[end - 2].lower not in NP_OPENERS
 
 
 _HELP = frozenset(["help", "some help", "a little help", "a bit of help", "your help", "a hand", "a little hand",
