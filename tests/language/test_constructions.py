@@ -4359,3 +4359,18 @@ def test_a_wish_for_a_deed_no_frame_does_is_refused(
     """words47: "I want the door locked" was a Bring of "the door locked" to the speaker, silently wrong; a wish whose
     phrase ends in the participle of a verb no frame lists asks for a deed the robot cannot do."""
     assert_reads(text, want, library)
+
+
+@pytest.mark.parametrize(("text", "want"), [
+    ("open the hatch, no wait, close it", [("Close", {"theme": "hatch"})]),
+    ("switch on the fan no sorry switch off the heater", [("ToggleOff", {"theme": "heater"})]),
+    ("go to the attic, no sorry, find my torch", [("Find", {"theme": "torch"})]),
+    ("open the hatch, sorry, then close the window", [("Open", {"theme": "hatch"}), ("Close", {"theme": "window"})]),
+])
+def test_a_denial_before_another_verb_takes_the_clause_back(
+        text: str, want: list[tuple[str, dict[str, str]]], library: Library) -> None:
+    """words47: "open the door, no wait, close it" opened "the door, no wait" (the marks a phrase joined to the door)
+    and closed it; marks with "no" of two words or more before a verb of the library take the clause back, as the
+    same verb said again does. "sorry, then ..." is still a next step."""
+    parse = parse_command(text, library)
+    assert [(f.frame, {r: e.head for r, e in f.elements.items() if not e.default}) for f in parse.frames] == want

@@ -231,7 +231,7 @@ def _correction(s: State, i: int, k: int, *, bare: bool = False) -> Match | None
     """The correction whose marks start at ``k``, its match consuming from ``i`` (the comma or joint before them,
     or the marks themselves: ``bare``)."""
     words = s.words
-    marks = 0
+    marks, denied, said = 0, False, 0
     while k < len(words):
         if words[k].lower == ",":
             k += 1
@@ -242,7 +242,8 @@ def _correction(s: State, i: int, k: int, *, bare: bool = False) -> Match | None
         n = longest_phrase(words, k, CORRECTION_MARKS)
         if not n:
             break
-        k, marks = k + n, marks + 1
+        denied = denied or any(w.lower == "no" for w in words[k:k + n])
+        k, marks, said = k + n, marks + 1, said + n
     if not marks or k >= len(words) or not bare and words[k - 1].lower != "," and \
             words[k - 1].lower in ("no", "wait", "sorry"):
         return None                              # "coffee, no sugar": "no" is its determiner
@@ -253,7 +254,7 @@ def _correction(s: State, i: int, k: int, *, bare: bool = False) -> Match | None
         if j >= len(words) or words[j].lower != ",":
             return None
         k = j + 1
-    again = _clause_again(s, i, k)
+    again = _clause_again(s, i, k, other=denied and said > 1)
     if again is not None:
         return again
     if (bare or words[i].lower in _CORRECTION_JOINS) and words[k].lower not in NP_OPENERS:
@@ -304,15 +305,16 @@ def _marks_then_comma(words: Sequence[Word], k: int) -> bool:
     return False
 
 
-def _clause_again(s: State, i: int, k: int) -> Match | None:
+def _clause_again(s: State, i: int, k: int, *, other: bool = False) -> Match | None:
     """"find Oscar, *actually find Nina*", "go to the hall, sorry, go to the porch": after a correction's marks, the
     clause's own verb said again starts it afresh — the clause said before the marks is taken back, a remark (it
     asks nothing; words31: both were done). Only the same verb, as said (its first word: "turn on the lamp, sorry,
     *turn* it off", words34): another verb may be a next step ("open the door, sorry, then close the window" is no
-    correction of the opening)."""
+    correction of the opening). ``other``: marks that deny ("no", then "wait"/"sorry": "open the door, *no wait,*
+    close it") take the clause back before any verb (words47: "no wait" was a phrase joined to "the door")."""
     out, words = s.out, s.words
-    if s.verb_index < 0 or k >= len(words) or not out[s.verb_index].lower or \
-            words[k].lower != out[s.verb_index].lower.split()[0] or not s.verb_after(k):
+    if s.verb_index < 0 or k >= len(words) or not out[s.verb_index].lower or not s.verb_after(k) or \
+            words[k].lower != out[s.verb_index].lower.split()[0] and not (other and s.verb_at(k) is not None):
         return None
     first = out[s.verb_index]
     said = Word(s.text_of(first.start, words[k - 1].end) or first.text, first.start, words[k - 1].end, Tag.POLITE)
@@ -355,6 +357,7 @@ CORRECTED = Rule("a phrase corrected", _corrected, (
     Example("go to the kitchen and no wait, go to the office", "kitchen", ""),   # after "and" (issue #13)
     Example("take the cup but sorry, the mug", "cup", ""),
     Example("go to the kitchen and no wait go to the office", "kitchen", ""),   # no comma: two words of marks
+    Example("open the door, no wait, close it", "door", ""),      # another verb after a denial (words47)
 ), frozenset([","]) | _CORRECTION_JOINS, "', no, NP' after a phrase: the new phrase stands for the last one said")
 CORRECTED_UNJOINED = Rule("a phrase corrected, no comma", _corrected_unjoined, (
     Example("bring me the plate no wait the bowl", "plate", ""),
