@@ -4281,6 +4281,7 @@ def test_a_correction_said_without_a_comma_replaces_the_phrase(
     ("I could use a hand", [("Go", {"goal": "me"})]),
     ("we need some help in the cellar, please", [("Go", {"goal": "cellar"})]),
     ("I need help over here", [("Go", {"goal": "over here"})]),
+    ("we need a hand with the sofa", [("Go", {"goal": "me"})]),     # what with: a remark
     ("I need a ladder", [("Bring", {"theme": "ladder", "recipient": "me"})]),
 ])
 def test_help_wished_for_with_no_deed_is_coming_to_whoever_asks(
@@ -4288,6 +4289,7 @@ def test_help_wished_for_with_no_deed_is_coming_to_whoever_asks(
     """words47: "I need a hand" was a Bring of "a hand"; with no deed said, the robot comes to the speaker (or to the
     place said) to learn what the help is for."""
     assert_reads(text, want, library)
+    assert parse_command("I need help with the box", library).remarks == ("with the box",)
 
 
 @pytest.mark.parametrize(("text", "want"), [

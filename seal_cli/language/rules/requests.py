@@ -1115,8 +1115,7 @@ def _help_wished(s: State, i: int) -> Match | None:
 def _help_alone(s: State, i: int) -> Match | None:
     """"*I need a hand*", "I could use some help, please", "we need a hand in the garage": a wish for help
     (``REQUESTS``, then :data:`_HELP`) with no deed said is coming to whoever asks (``HELP_MEANS``: "come to me"), or
-    to the one place said after it ("in the garage"). Help with a thing ("I need help with the box") or for a deed
-    ("... carrying the bags": :func:`_help_wished`) is another's."""
+    to the one place said after it ("in the garage"); what it is with ("I need help *with the box*") is a remark. Help for a deed ("... carrying the bags": :func:`_help_wished`) is another's."""
     words = s.words
     n = _phrase(s, i, REQUESTS)
     m = _phrase(s, i + n, _HELP) if n else 0
@@ -1126,12 +1125,17 @@ def _help_alone(s: State, i: int) -> Match | None:
     end = _sentence_end(s, k)
     while end > k and words[end - 1].lower in (",", "please", "now"):
         end -= 1
+    with_what = words[k].lower == "with" and s.np_starts(k + 1) and not any(
+        s.verb_at(j) is not None or words[j].lower in (",", "and", "then") for j in range(k + 1, end)) if end > k else False
+    remarks = ((words[k].start, words[end - 1].end),) if with_what else ()
+    if with_what:
+        k = end                                  # "I need help *with the box*": what it is for, a remark
     verb = Word(s.text_of(words[i].start, words[k - 1].end), words[i].start, words[k - 1].end, Tag.VERB, HELP_MEANS)
     if end == k:                                 # "I need a hand": come to me
         at = words[k - 1].end
-        return Match(n + m, (verb, _unsaid(at, Tag.PREP, PREPOSITIONS["to"], "to"), _unsaid(at, Tag.PRON, None,
+        return Match(k - i, (verb, _unsaid(at, Tag.PREP, PREPOSITIONS["to"], "to"), _unsaid(at, Tag.PRON, None,
                                                                                                _SPEAKER)),
-                     expect=False, verb=HELP_MEANS, using=False)
+                     remarks=remarks, expect=False, verb=HELP_MEANS, using=False)
     if match_phrase(words, k, HERE_WORDS) == end - k:
         return Match(n + m, (verb,), expect=False, verb=HELP_MEANS, using=False)   # "... help here": come here
     if PREPOSITIONS.get(words[k].lower) not in LOCATED or not s.np_starts(k + 1) or \
@@ -2201,6 +2205,7 @@ HELP_ALONE = Rule("help wished for, no deed said", _help_alone, (
     Example("we could use some help in the garage", "we could use some help", Tag.VERB),
     Example("I need some help here, please", "I need some help", Tag.VERB),
     Example("I could use a hand", "I could use a hand", Tag.VERB),
+    Example("I need help with the box", "I need help with the box", Tag.VERB),
 ), _REQUEST_FIRST, "'I need a hand (in the garage)': come to me (to the garage)")
 REQUEST_FOR = Rule("may a person have a thing", _request_for, (
     Example("Can Jane have the salt?", "Jane", Tag.NAME),
