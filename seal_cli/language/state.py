@@ -13,7 +13,6 @@ from collections.abc import Iterable, Mapping, Sequence
 from typing import TYPE_CHECKING
 
 from seal_cli.language.english import (
-    FOUND_THERE,
     ADDITIVES,
     AND_WORDS,
     BASE_FORM_SUBJECTS,
@@ -28,6 +27,7 @@ from seal_cli.language.english import (
     END_MARKS,
     FILLERS,
     FINITE,
+    FOUND_THERE,
     FREE_RELATIVES,
     FREQUENCY_ADVERBS,
     HERE_WORDS,

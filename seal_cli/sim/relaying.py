@@ -14,7 +14,8 @@ person relaying a message says whose it is and turns its first person singular i
 The one the message is passed on to is "you" in it (words47): "tell Sam I will meet *him*" → *... says they will
 meet you*; a "he" or "she" (with the verb agreeing: "he *is*" → *you are*, "she *wants*" → *you want*), "his", "her",
 "himself" stand for the hearer when the message names no one else (no capitalised word but "I" and a first word
-of the dictionary: "tell Sam Anna misses him" is passed on as said). "her" before a noun or adjective is "your" ("her keys"), else "you".
+of the dictionary: "tell Sam Anna misses him" is passed on as said). "her" before a noun or adjective is "your"
+("her keys"), else "you".
 
 *They* stands for the sender (singular "they": the simulator knows no one's gender) and takes the verb forms "I"
 takes, but for "be": *am*, *'m* and *was* become *are*, *'re* and *were* (:data:`AGREEMENT`). "me", "my", "mine",

@@ -1115,7 +1115,8 @@ def _help_wished(s: State, i: int) -> Match | None:
 def _help_alone(s: State, i: int) -> Match | None:
     """"*I need a hand*", "I could use some help, please", "we need a hand in the garage": a wish for help
     (``REQUESTS``, then :data:`_HELP`) with no deed said is coming to whoever asks (``HELP_MEANS``: "come to me"), or
-    to the one place said after it ("in the garage"); what it is with ("I need help *with the box*") is a remark. Help for a deed ("... carrying the bags": :func:`_help_wished`) is another's."""
+    to the one place said after it ("in the garage"); what it is with ("I need help *with the box*") is a remark.
+    Help for a deed ("... carrying the bags": :func:`_help_wished`) is another's."""
     words = s.words
     n = _phrase(s, i, REQUESTS)
     m = _phrase(s, i + n, _HELP) if n else 0
@@ -1125,8 +1126,8 @@ def _help_alone(s: State, i: int) -> Match | None:
     end = _sentence_end(s, k)
     while end > k and words[end - 1].lower in (",", "please", "now"):
         end -= 1
-    with_what = words[k].lower == "with" and s.np_starts(k + 1) and not any(
-        s.verb_at(j) is not None or words[j].lower in (",", "and", "then") for j in range(k + 1, end)) if end > k else False
+    with_what = end > k and words[k].lower == "with" and s.np_starts(k + 1) and not any(
+        s.verb_at(j) is not None or words[j].lower in (",", "and", "then") for j in range(k + 1, end))
     remarks = ((words[k].start, words[end - 1].end),) if with_what else ()
     if with_what:
         k = end                                  # "I need help *with the box*": what it is for, a remark
