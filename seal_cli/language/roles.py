@@ -88,10 +88,15 @@ class Roles:
             any(isinstance(x, PP) and x.prep == "for" for x in clause.items)
         if seek and objects:                 # "search the kitchen for a can opener": the kitchen is searched
             roles["ground"] = objects.pop(0)
+        topic = self.topic(clause) if first == "message" and clause.message is None else None
         if clause.message is not None and first is not None:
             roles[first] = clause.message
             if objects and "recipient" in have:
                 roles["recipient"] = objects.pop(0)
+        elif topic is not None:
+            roles[first] = topic.np              # "tell robin *about the weather*": what is told is about it
+            if len(objects) == 1 and "recipient" in have:
+                roles["recipient"] = objects.pop(0)   # the one told, whatever kind of word names them
         elif len(objects) >= 2:
             if "recipient" in have:
                 roles["recipient"] = objects.pop(0)
@@ -119,6 +124,9 @@ class Roles:
                 previous = item
                 continue
             if not isinstance(item, PP):
+                continue
+            if item is topic:
+                previous = item.np
                 continue
             if seek and item.prep == "for" and "theme" not in roles:
                 roles["theme"] = item.np          # "... for a can opener", "look in the closet for my scarf"
@@ -159,6 +167,13 @@ class Roles:
             previous = item.np
         score = sum(self.fit(frame, role, np) for role, np in roles.items())
         return roles, attached, score
+
+    @staticmethod
+    def topic(clause: Clause) -> PP | None:
+        """The phrase a telling is about ("tell Sam *about the party*", "speak to the guests about dinner"): the
+        first "about" phrase of the clause that describes no noun. It is the message (words46: "tell robin in the
+        kitchen about the weather" told "robin in the kitchen" to nobody)."""
+        return next((x for x in clause.items if isinstance(x, PP) and x.prep == "about" and not x.describes), None)
 
     @staticmethod
     def searches(frame: Frame, unit: str) -> bool:

@@ -539,6 +539,8 @@ class State:
             return end                                        # "noah has to get to the garage": a name (words24)
         if verb_lemma(first) == first and first not in SUBJECTS:
             return 0                                          # "Grab the cup": a command, maybe an unknown verb
+        if self.wish_of_deed(i):
+            return 0                                          # "..., then *I want you to* give it to me": a request
         if first in BASE_FORM_SUBJECTS and nxt.isalpha() and nxt not in PREPOSITIONS:
             return end                                        # "we open at six", "I need a hand": no command
         if first in ("you'll", "you'd", "you") and match_phrase(words, i, YOU_MUST) and \
@@ -644,6 +646,14 @@ class State:
         nxt = self.words[k + 1].lower if k + 1 < end else ""
         return bool(nxt) and (nxt in PREPOSITIONS or nxt in NP_OPENERS or nxt == "to"
                               or nxt in OBJECT_PRONOUNS or bool(gerund_lemma(nxt)))   # "a guest *left* it"
+
+    def wish_of_deed(self, i: int) -> bool:
+        """Whether a wish that the robot do something starts at ``i`` ("*I want you to* give it to me", "we need you
+        to close the gate": a polite formula of ``POLITE`` that starts with its subject, then a verb of the library):
+        a request, no statement, wherever a clause starts ("get the plum, and then I want you to give it to me": it
+        was dropped as a remark, words46)."""
+        n = match_phrase(self.words, i, POLITE)
+        return n > 2 and self.verb_after(i + n)
 
     def vocatives_end(self, i: int) -> int:
         """Where words of address and tag questions starting at ``i`` end, commas between ("..., *dear*",

@@ -4244,3 +4244,33 @@ def test_how_many_said_bare_counts_the_things_a_statement_named(
     named, where it said they are, as "count them" does. A place said first in the existential ("*on the counter*
     there are ...") is where they are."""
     assert_reads(text, want, library)
+
+
+# words46 -------------------------------------------------------------------------------------------------------------
+
+
+@pytest.mark.parametrize(("text", "want"), [
+    ("grab the towel, then I'd like you to hang it on the hook",
+     [("Pick", {"theme": "towel"}), ("Place", {"theme": "towel", "goal": "hook"})]),
+    ("open the shed, and then we need you to bring out the mower", [("Open", {"theme": "shed"}),
+                                                                    ("Bring", {"theme": "mower"})]),
+])
+def test_a_wish_that_the_robot_act_after_a_joint_is_a_request_not_a_remark(
+        text: str, want: list[tuple[str, dict[str, str]]], library: Library) -> None:
+    """words46: after ", then" the subject "I"/"we" read the wish as a statement beside the command, and the step after
+    it was dropped as a remark (no error: the verb vanished)."""
+    assert_reads(text, want, library)
+    assert frames("shut the gate, I need you here", library) == [("Close", {"theme": "gate"})]   # a statement still
+
+
+@pytest.mark.parametrize(("text", "want"), [
+    ("tell grandma about the parcel", [("Tell", {"message": "parcel", "recipient": "grandma"})]),
+    ("could you tell noor in the garden about the storm", [("Tell", {"message": "storm", "recipient": "noor"})]),
+    ("speak to the visitors about the schedule", [("Tell", {"message": "schedule", "recipient": "visitor"})]),
+    ("tell me about the man by the gate", [("Tell", {"message": "man", "recipient": "me"})]),
+])
+def test_what_a_telling_is_about_is_its_message(
+        text: str, want: list[tuple[str, dict[str, str]]], library: Library) -> None:
+    """words46: "tell X about Y" — the "about" phrase described the person told ("noor about the storm"), or the person
+    (a word no dictionary calls one) was the message and nobody was told."""
+    assert_reads(text, want, library)
