@@ -230,6 +230,10 @@ def subject_word(word: Word) -> bool:
         "'" in low and low.split("'")[0] in SUBJECTS and "'" + low.split("'", 1)[1] in CONTRACTED
 
 
+_HELPED = frozenset(["him", "her", "them"])
+"""Pronouns of the person helped in "help *her* find ..." ("help me/us" are politeness of ``POLITE``)."""
+
+
 def statement_lead(word: Word, nxt: Word) -> bool:
     """Whether a word may lead a statement said beside the command: a sentence adverb ("*apparently*
     they're staying"), or "and"/"then"/"quick" before a comma, an adverb or a subject ("*and* quick, it's
@@ -474,10 +478,36 @@ class State:
                 continue
             break
         if i < len(self.words) and (self.verb_at(i) is not None or self.use_at(i) or
-                                    self.words[i].lower in LIGHT_VERBS and self.light_verb(i) is not None):
+                                    self.words[i].lower in LIGHT_VERBS and self.light_verb(i) is not None or
+                                    self.words[i].lower == "help" and self.helped_verb(i)):
             return True                 # "go and *have a look for* the sponge": a light verb (words40)
         return start < i and (start < len(self.words) and self.verb_at(start) is not None or
                               said != start and self.verb_at(said) is not None)
+
+    def helped_verb(self, i: int) -> int:
+        """Where the verb helped with starts after "help" at ``i`` (0: none): "help", the person (a pronoun, one
+        name, or a person's noun the taxonomy knows, maybe after its determiner and up to two adjectives: "help *the
+        old man*"), maybe "to", then a verb of the library in its base form ("help Jane find her keys", "help the
+        guest to find a seat")."""
+        words = self.words
+        if words[i].lower != "help" or i + 2 >= len(words):
+            return 0
+        k = i + 1
+        if words[k].lower in DETERMINERS:
+            k += 1
+            while k + 1 < len(words) and k < i + 4 and is_adjective(words[k].lower) and \
+                    (noun_lemma(words[k].lower) or words[k].lower) not in self.lexicon.people:
+                k += 1                  # "help the *old* man get to the exit" (words46)
+            if k >= len(words):
+                return 0
+        person = words[k].lower
+        if not (person in _HELPED and k == i + 1 or capitalised(words[k]) and k == i + 1 or
+                (noun_lemma(person) or person) in self.lexicon.people):
+            return 0
+        k += 1 + (k + 1 < len(words) and words[k + 1].lower == "to")
+        if k >= len(words) or verb_lemma(words[k].lower) != words[k].lower or self.verb_at(k) is None:
+            return 0
+        return k
 
     def formula(self, i: int) -> int:
         """How many words a politeness formula said as a whole clause takes at ``i`` (0: none): it

@@ -4274,3 +4274,26 @@ def test_what_a_telling_is_about_is_its_message(
     """words46: "tell X about Y" — the "about" phrase described the person told ("noor about the storm"), or the person
     (a word no dictionary calls one) was the message and nobody was told."""
     assert_reads(text, want, library)
+
+
+@pytest.mark.parametrize(("text", "want"), [
+    ("help grandpa get to the garden", [("Guide", {"theme": "grandpa", "goal": "garden"})]),
+    ("please help the old man go back to his room", [("Guide", {"theme": "man", "goal": "room"})]),
+    ("Noor needs to get to the shed, help her get there", [("Guide", {"theme": "Noor", "goal": "shed"})]),
+    ("help Jo find her keys", [("Find", {"theme": "key"})]),                                 # a deed helped: as before
+])
+def test_helping_a_person_move_somewhere_is_leading_them(
+        text: str, want: list[tuple[str, dict[str, str]]], library: Library) -> None:
+    """words46: "help him get to the kitchen" was a Go of the robot and the person was dropped; after a statement
+    ("..., help her get there") the whole was refused as a statement ("help" is no verb of the library)."""
+    assert_reads(text, want, library)
+
+
+@pytest.mark.parametrize(("text", "want"), [
+    ("follow Noor wherever she wants to go", [("Follow", {"theme": "Noor"})]),
+    ("go with jo wherever he needs to go", [("Follow", {"theme": "jo"})]),
+])
+def test_a_free_relative_of_place_with_a_wish_is_a_remark(
+        text: str, want: list[tuple[str, dict[str, str]]], library: Library) -> None:
+    """words46: the base form after "wants to" was read as a command of the robot and the free relative refused."""
+    assert_reads(text, want, library)
