@@ -4297,3 +4297,26 @@ def test_a_free_relative_of_place_with_a_wish_is_a_remark(
         text: str, want: list[tuple[str, dict[str, str]]], library: Library) -> None:
     """words46: the base form after "wants to" was read as a command of the robot and the free relative refused."""
     assert_reads(text, want, library)
+
+
+@pytest.mark.parametrize(("text", "want"), [
+    ("answer whatever the girl by the window asks you", [("Answer", {"theme": "whatever", "recipient": "girl"})]),
+    ("answer the questions that the visitor in the hall asks",
+     [("Answer", {"theme": "question", "recipient": "visitor"})]),
+    ("answer the question he asks you", [("Answer", {"theme": "question"})]),
+])
+def test_what_a_person_asks_is_their_question(
+        text: str, want: list[tuple[str, dict[str, str]]], library: Library) -> None:
+    """words46: "answer whatever X asks you" was refused ("whatever" no element took), "the question he asks you"
+    answered "he asks you" to "the question"; the asker is whose question it is, as "the question of X" says."""
+    assert_reads(text, want, library)
+
+
+@pytest.mark.parametrize(("text", "want"), [
+    ("I want the scarf that's on the chair", [("Bring", {"theme": "scarf", "recipient": "me", "source": "chair"})]),
+    ("I want the scarf on the chair", [("Place", {"theme": "scarf", "goal": "chair"})]),          # a wish placed
+])
+def test_a_thing_wished_for_with_a_relative_of_where_it_is_is_brought(
+        text: str, want: list[tuple[str, dict[str, str]]], library: Library) -> None:
+    """words46: "I want the juice that's on the shelf" was a wish to put the juice on the shelf."""
+    assert_reads(text, want, library)

@@ -130,6 +130,7 @@ word is tagged as what it is (``INSIDE``), and the grammar reports the missing v
 
 INSIDE: tuple[Rule, ...] = (
     clauses.END_MARK,
+    statements.ASKING_DROPPED,
     negatives.CORRECTED,
     negatives.DENIED_AFTER,
     negatives.PROHIBITED_AFTER,
@@ -150,6 +151,7 @@ INSIDE: tuple[Rule, ...] = (
     requests.PERSON_NEED_DROPPED,
     clauses.PARTITIVE_OF,
     clauses.PARTICLE_BETWEEN_OBJECTS,
+    statements.QUESTION_ASKER,
     statements.HER_TOLD,
     statements.TOLD,
     statements.TOLD_HOW_TO,

@@ -45,6 +45,7 @@ from seal_cli.language.english import (
     PRONOUNS,
     QUESTION_MEANS,
     QUESTION_WORDS,
+    RELATIVES,
     REQUEST_MEANS,
     REQUESTS,
     SEEN_ASKED,
@@ -1112,6 +1113,8 @@ def _wished_placed(s: State, i: int) -> Match | None:
           or s.verb_at(p) is not None and words[p - 1].lower not in NP_OPENERS]
     if len(at) != 1 or PREPOSITIONS.get(words[at[0]].lower) not in WISHED_PLACES or not s.np_starts(at[0] + 1):
         return None
+    if any(words[p].lower.split("'")[0] in RELATIVES for p in range(k + 1, at[0])):
+        return None             # "I want the juice *that's on* the shelf": where it is, no place it goes (words46)
     start, stop = words[i].start, words[k - 1].end
     return Match(n, (Word(s.text_of(start, stop), start, stop, Tag.VERB, PLACE_MEANS),), expect=False,
                  verb=PLACE_MEANS, using=False)
