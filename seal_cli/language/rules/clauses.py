@@ -281,7 +281,7 @@ RELATIVE = Rule("relative clause", _relative, (
    "'with X in it')")
 CONTACT_RELATIVE = Rule("relative clause of a name, no that", _contact_relative, (
     Example("give me the book Tom lent you", "Tom lent you", Tag.REL),
-    Example("bring me the note Ella wrote", "Ella wrote", Tag.REL),     # words46: "answer the question Ella asked": hers
+    Example("bring me the note Ella wrote", "Ella wrote", Tag.REL),     # words46: "the question Ella asked": hers
     Example("bring me the mug Sam left on the sofa", "Sam left", Tag.REL),
 ), lambda low: low.isalpha() and low not in CLOSED, "a name and a past verb after a noun: a relative clause "
    "without 'that'", after=frozenset([Tag.WORD]))
