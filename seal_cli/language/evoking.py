@@ -582,8 +582,9 @@ class Evoker:
         _, frame, _, _ = best
         first = frame.elements[0] if frame.elements else None
         if first is None or not self.types.is_person(first.type) or not clause.objects or \
-                self.roles.kind(clause.objects[-1], None, None) == "person" or not self.recipient_said(clause):
-            return best
+                self.roles.kind(clause.objects[-1], None, None) in ("person", "pronoun") or \
+                not self.recipient_said(clause):
+            return best                      # "greet *them* for me": no thing said they could be, so people (words46)
         thing = clause.objects[-1]
         if thing.head_text in ROUTE_NOUNS:
             return best                      # "show them the way (to the kitchen)": leading them, as chosen

@@ -20,7 +20,7 @@ from dataclasses import replace
 from seal_cli.frames.library import Library
 from seal_cli.frames.model import Frame
 from seal_cli.language.element_types import Types
-from seal_cli.language.english import BESIDE, LOCATED, NP_OPENERS, PREPOSITIONS, PRONOUNS, is_room_word
+from seal_cli.language.english import BESIDE, LOCATED, MODALS, NP_OPENERS, PREPOSITIONS, PRONOUNS, is_room_word
 from seal_cli.language.lexicon import Mention, Word, mentions, noun_lemma
 from seal_cli.language.morphology import is_plural, parts_of_speech, plural_only
 from seal_cli.language.syntax import NP
@@ -348,8 +348,10 @@ class Reference:
             m = replace(m, end=end, head=words[-2])
         opening = self.text[span[0]:m.start].lower().split()
         between = self.text[m.end:said.start].lower().replace("'s", " 's").split()
+        if between[1:2] and between[1] in MODALS and between[2:3] == ["be"]:
+            between = between[:1] + between[2:]              # "in the garage there *should be* a ladder" (words46)
         if not opening or " ".join(opening) not in (*LOCATED, *BESIDE) or between[:1] != ["there"] or \
-                len(between) < 2 or between[1] not in ("is", "are", "'s", "was", "were"):
+                len(between) < 2 or between[1] not in ("is", "are", "'s", "was", "were", "be"):
             return None
         return m
 

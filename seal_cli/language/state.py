@@ -817,8 +817,9 @@ class State:
             return 0
         for k in range(i + n + 1, len(words) - 1):
             low = words[k].lower
-            if low == "there" and words[k + 1].lower in BE_WORDS:
-                return k
+            if low == "there" and (words[k + 1].lower in BE_WORDS or words[k + 1].lower in MODALS and
+                                   k + 2 < len(words) and words[k + 2].lower == "be"):
+                return k                          # "in the kitchen there *should be* someone" (words46)
             if not low.isalpha() or low in END_MARKS or self.verb_at(k) is not None and \
                     words[k - 1].lower not in NP_OPENERS:
                 return 0                          # "in the *study* there are three mugs": a noun (words26)

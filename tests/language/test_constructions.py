@@ -4320,3 +4320,36 @@ def test_a_thing_wished_for_with_a_relative_of_where_it_is_is_brought(
         text: str, want: list[tuple[str, dict[str, str]]], library: Library) -> None:
     """words46: "I want the juice that's on the shelf" was a wish to put the juice on the shelf."""
     assert_reads(text, want, library)
+
+
+@pytest.mark.parametrize(("text", "want"), [
+    ("in the garage there should be a ladder, bring it to me",
+     [("Bring", {"theme": "ladder", "recipient": "me", "source": "garage"})]),
+    ("in the hall there might be someone waiting, greet them", [("Greet", {"theme": "someone", "ground": "hall"})]),
+])
+def test_a_place_said_before_an_existential_with_a_modal(
+        text: str, want: list[tuple[str, dict[str, str]]], library: Library) -> None:
+    """words46: "in the kitchen there *should be* someone" was refused ("should" an unknown verb); "there is" was read."""
+    assert_reads(text, want, library)
+
+
+@pytest.mark.parametrize(("text", "want"), [
+    ("you'll find Noor by the piano, take her to the garden",
+     [("Guide", {"theme": "Noor", "source": "piano", "goal": "garden"})]),
+    ("you will find the towels in the closet, bring them to me",
+     [("Bring", {"theme": "towel", "recipient": "me", "source": "closet"})]),
+    ("you'll find the towels in the closet and bring them to me",                 # two steps, joined by "and"
+     [("Find", {"theme": "towel", "ground": "closet"}), ("Bring", {"theme": "towel", "recipient": "me"})]),
+])
+def test_where_you_will_find_someone_is_a_statement_before_the_command(
+        text: str, want: list[tuple[str, dict[str, str]]], library: Library) -> None:
+    """words46: "you'll find Axel by the bookshelf, lead him ..." was a Find of Axel before the leading (words42 left
+    it); it says where he is, as "Axel is by the bookshelf, ..." does."""
+    assert_reads(text, want, library)
+
+
+def test_a_person_verb_said_of_them_for_someone_is_not_a_delivery(library: Library) -> None:
+    """words46: "greet them for me" was a Bring of "them" to me (the frame of showing a thing to someone: "them" with
+    no antecedent was taken for a thing); a verb whose object is a person keeps its frame."""
+    assert [f for f, _ in frames("greet them for me", library)] == ["Greet"]
+    assert [f for f, _ in frames("show me the remote", library)] == ["Bring"]          # a thing shown: as before

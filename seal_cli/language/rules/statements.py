@@ -4,16 +4,52 @@ words of address and statements after the request ("..., dear, I'm cold"), a cla
 
 from __future__ import annotations
 
-from seal_cli.language.english import BECAUSE, FINITE, LET_KNOW, NOMINATIVE, NP_OPENERS, RELATIVES, SUBJECTS, WH_WORDS
+from seal_cli.language.english import (
+    BECAUSE,
+    END_MARKS,
+    FINITE,
+    FOUND_STATED,
+    LET_KNOW,
+    LOCATIVE,
+    NOMINATIVE,
+    NP_OPENERS,
+    PREPOSITIONS,
+    RELATIVES,
+    SUBJECTS,
+    WH_WORDS,
+)
 from seal_cli.language.morphology import verb_lemma
-from seal_cli.language.rule import Example, Match, Rule
-from seal_cli.language.state import CLOSED, State, subject_contracted, subject_word
+from seal_cli.language.rule import START, Example, Match, Rule
+from seal_cli.language.state import CLOSED, State, first_words, longest_phrase, merge, subject_contracted, subject_word
 from seal_cli.language.tags import Tag
 from seal_cli.language.tokens import Word, capitalised
 
 
 def _aside(s: State, i: int) -> Match | None:
     return s.aside(i)
+
+
+def _found_stated(s: State, i: int) -> Match | None:
+    """"*You'll find Axel by the bookshelf,* lead him to the kitchen" (``FOUND_STATED``): at a sentence's start, the
+    words of coming upon, a phrase, a preposition of where it is and its phrase, then a comma and a command (no "then"
+    or "and": "you'll find Sam in the hall, then bring him a tea" is two steps) — a remark the command's pronoun
+    names, as "Axel is by the bookshelf, ..." is."""
+    words = s.words
+    if s.out and not (s.out[-1].tag == Tag.SEP and s.out[-1].lower in END_MARKS):
+        return None
+    n = longest_phrase(words, i, FOUND_STATED)
+    if not n or not s.np_starts(i + n):
+        return None
+    comma = next((k for k in range(i + n + 1, len(words)) if words[k].lower in (",", ";") or
+                  words[k].lower in END_MARKS or words[k].lower in ("and", "then")), len(words))
+    if comma + 1 >= len(words) or words[comma].lower not in (",", ";") or \
+            words[comma + 1].lower in ("and", "then") or not s.verb_after(comma + 1):
+        return None
+    if not any(PREPOSITIONS.get(w.lower) in LOCATIVE for w in words[i + n + 1:comma]) or \
+            any(s.verb_at(k) is not None for k in range(i + n, comma)):
+        return None
+    return Match(comma + 1 - i, (merge(words, i, comma + 1 - i, Tag.POLITE),),
+                 remarks=((words[i].start, words[comma - 1].end),))
 
 
 def _her_told(s: State, i: int) -> Match | None:
@@ -142,6 +178,12 @@ QUESTION_ASKER = Rule("whose question, asked", _question_asker, (
 ASKING_DROPPED = Rule("whose question, asked: the asking", _asking_dropped, (
     Example("answer whatever the man at the door asks you", "asks you", ""),
 ), _ASKING, "the 'asks you' after the asker of 'answer whatever X asks you': dropped, X is whose question it is")
+FOUND_STATED_RULE = Rule("where you will find it", _found_stated, (
+    Example("you'll find Noor by the piano, take her to the garden", "you'll find Noor by the piano,", Tag.POLITE),
+    Example("you will find the keys in the drawer, bring them to me", "you will find the keys in the drawer,",
+            Tag.POLITE),
+), first_words(FOUND_STATED), "'you'll find X in Y, V it': where X is, a remark the command's pronoun names",
+    after=frozenset([START, Tag.SEP]))
 HER_TOLD = Rule("her told", _her_told, (
     Example("tell her we're moving", "her", Tag.PRON),
     Example("tell her dinner's ready", "her", Tag.PRON),
