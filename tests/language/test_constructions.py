@@ -4329,7 +4329,8 @@ def test_a_thing_wished_for_with_a_relative_of_where_it_is_is_brought(
 ])
 def test_a_place_said_before_an_existential_with_a_modal(
         text: str, want: list[tuple[str, dict[str, str]]], library: Library) -> None:
-    """words46: "in the kitchen there *should be* someone" was refused ("should" an unknown verb); "there is" was read."""
+    """words46: "in the kitchen there *should be* someone" was refused ("should" an unknown verb); "there is" was
+    read."""
     assert_reads(text, want, library)
 
 
