@@ -55,6 +55,7 @@ from seal_cli.language.english import (
     QUESTION_WORDS,
     RELATIVES,
     REQUESTS,
+    SEEN_ASKED,
     SEEN_QUESTIONS,
     SEPARATOR_WORDS,
     SEQUENCE_ADVERBS,
@@ -121,6 +122,11 @@ for _table in (PREPOSITIONS, POLITE, _FORMULAE, SEPARATOR_WORDS, SEQUENCE_ADVERB
             _PHRASES[_two] = (*_PHRASES.get(_two, ()), (_phrase, _parts))
 _PHRASES = {first: tuple(sorted(found, key=lambda item: -len(item[1]))) for first, found in _PHRASES.items()}
 _PHRASE_FIRST = frozenset(first for first, _ in _PHRASES)
+
+_SEEING_FIRST = frozenset(p.split()[0] for p in SEEN_ASKED[2])
+"""First words of the verbs of a question whether a thing was seen ("have you *seen* ...", "did anyone *come*
+across")."""
+
 
 def first_words(phrases: Iterable[str]) -> frozenset[str]:
     """The words the phrases start with: where a rule reading them can start (its gate)."""
@@ -993,6 +999,10 @@ class State:
         words = self.words
         if words[k].lower in QUESTION_WORDS:
             return True
+        auxiliaries, subjects, seeing = SEEN_ASKED
+        if words[k].lower in auxiliaries and k + 2 < len(words) and words[k + 1].lower in subjects and \
+                verb_lemma(words[k + 2].lower) in _SEEING_FIRST:
+            return True                 # "I'm looking for my phone, *have you seen* it anywhere?" (words46)
         return any(all(k + m < len(words) and words[k + m].lower == part for m, part in enumerate(phrase.split()))
                    for phrase in (*WHERE_QUESTIONS, *REQUESTS) if phrase.split()[0] == words[k].lower)
 

@@ -4354,3 +4354,15 @@ def test_a_person_verb_said_of_them_for_someone_is_not_a_delivery(library: Libra
     no antecedent was taken for a thing); a verb whose object is a person keeps its frame."""
     assert [f for f, _ in frames("greet them for me", library)] == ["Greet"]
     assert [f for f, _ in frames("show me the remote", library)] == ["Bring"]          # a thing shown: as before
+
+
+@pytest.mark.parametrize(("text", "want"), [
+    ("I can't find my wallet, have you seen it anywhere?", [("Find", {"theme": "wallet"})]),
+    ("my scarf is gone, did anyone see it", [("Find", {"theme": "scarf"})]),
+])
+def test_a_statement_before_a_question_whether_a_thing_was_seen(
+        text: str, want: list[tuple[str, dict[str, str]]], library: Library) -> None:
+    """words46: the statement was kept as the command and refused ("... is a statement, no command"): a question
+    whether it was seen asks to find it, as it does alone ("have you seen my phone?")."""
+    got = frames(text, library)
+    assert [(f, {r: h for r, h in roles.items() if r != "ground"}) for f, roles in got] == want
