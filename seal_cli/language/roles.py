@@ -88,7 +88,9 @@ class Roles:
             any(isinstance(x, PP) and x.prep == "for" for x in clause.items)
         if seek and objects:                 # "search the kitchen for a can opener": the kitchen is searched
             roles["ground"] = objects.pop(0)
-        topic = self.topic(clause) if first == "message" and clause.message is None else None
+        topic = self.topic(clause) if first == "message" and clause.message is None and (
+            not objects or len(objects) == 1 and not any(isinstance(x, PP) and x.prep in TO for x in clause.items)) \
+            else None
         if clause.message is not None and first is not None:
             roles[first] = clause.message
             if objects and "recipient" in have:
@@ -171,8 +173,9 @@ class Roles:
     @staticmethod
     def topic(clause: Clause) -> PP | None:
         """The phrase a telling is about ("tell Sam *about the party*", "speak to the guests about dinner"): the
-        first "about" phrase of the clause that describes no noun. It is the message (words46: "tell robin in the
-        kitchen about the weather" told "robin in the kitchen" to nobody)."""
+        first "about" phrase of the clause that describes no noun. It is the message when no object but the one told
+        is said (words46: "tell robin in the kitchen about the weather" told "robin in the kitchen" to nobody); "tell
+        them *something* about yourself", "say something about yourself to Jo" keep it on the thing said."""
         return next((x for x in clause.items if isinstance(x, PP) and x.prep == "about" and not x.describes), None)
 
     @staticmethod
