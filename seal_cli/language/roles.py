@@ -39,6 +39,10 @@ PUT_IN = ("in", "on", "inside", "into", "onto")
 """Prepositions that say a thing is put in or on another."""
 
 
+_SAID_INDEFINITE = frozenset(["a", "an", "some", "any", "something", "anything", "everything", "nothing"])
+"""First words of a telling's object that say what is said, not to whom ("say *something* about yourself")."""
+
+
 @dataclass(frozen=True)
 class Sense:
     """The roles a preposition's phrase may fill, in the order they are tried."""
@@ -89,8 +93,8 @@ class Roles:
         if seek and objects:                 # "search the kitchen for a can opener": the kitchen is searched
             roles["ground"] = objects.pop(0)
         topic = self.topic(clause) if first == "message" and clause.message is None and (
-            not objects or len(objects) == 1 and not any(isinstance(x, PP) and x.prep in TO for x in clause.items)) \
-            else None
+            not objects or len(objects) == 1 and self.told_whom(objects[0]) and
+            not any(isinstance(x, PP) and x.prep in TO for x in clause.items)) else None
         if clause.message is not None and first is not None:
             roles[first] = clause.message
             if objects and "recipient" in have:
@@ -169,6 +173,13 @@ class Roles:
             previous = item.np
         score = sum(self.fit(frame, role, np) for role, np in roles.items())
         return roles, attached, score
+
+    def told_whom(self, np: NP) -> bool:
+        """Whether a telling's one object may be the one told, with what it is about said after it ("tell *robin*
+        about the weather"): not an indefinite thing said ("say *something* about yourself", "tell *a joke* about
+        cats": what is said)."""
+        said = self.reference.text[np.start:np.end].lower().split()
+        return bool(said) and said[0] not in _SAID_INDEFINITE and np.pronoun not in _SAID_INDEFINITE
 
     @staticmethod
     def topic(clause: Clause) -> PP | None:

@@ -4268,6 +4268,8 @@ def test_a_wish_that_the_robot_act_after_a_joint_is_a_request_not_a_remark(
     ("could you tell noor in the garden about the storm", [("Tell", {"message": "storm", "recipient": "noor"})]),
     ("speak to the visitors about the schedule", [("Tell", {"message": "schedule", "recipient": "visitor"})]),
     ("tell me about the man by the gate", [("Tell", {"message": "man", "recipient": "me"})]),
+    ("say something about the weather", [("Tell", {"message": "something"})]),           # what is said, not to whom
+    ("tell a story about dragons", [("Tell", {"message": "story"})]),
 ])
 def test_what_a_telling_is_about_is_its_message(
         text: str, want: list[tuple[str, dict[str, str]]], library: Library) -> None:
@@ -4303,7 +4305,8 @@ def test_a_free_relative_of_place_with_a_wish_is_a_remark(
     ("answer whatever the girl by the window asks you", [("Answer", {"theme": "whatever", "recipient": "girl"})]),
     ("answer the questions that the visitor in the hall asks",
      [("Answer", {"theme": "question", "recipient": "visitor"})]),
-    ("answer the question he asks you", [("Answer", {"theme": "question"})]),
+    ("greet Jo and answer the question he asks you", [("Greet", {"theme": "Jo"}),
+                                                      ("Answer", {"theme": "question", "recipient": "Jo"})]),
 ])
 def test_what_a_person_asks_is_their_question(
         text: str, want: list[tuple[str, dict[str, str]]], library: Library) -> None:
