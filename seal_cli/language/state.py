@@ -689,7 +689,11 @@ class State:
         a request, no statement, wherever a clause starts ("get the plum, and then I want you to give it to me": it
         was dropped as a remark, words46)."""
         n = match_phrase(self.words, i, POLITE)
-        return n > 2 and self.verb_after(i + n)
+        if n <= 2 or i + n >= len(self.words):
+            return False
+        low = self.words[i + n].lower
+        return self.verb_after(i + n) or low.isalpha() and verb_lemma(low) == low and in_verb_tables(low)
+        #   a verb no frame lists is refused at it, never dropped with the remark ("..., then I want you to polish it")
 
     def vocatives_end(self, i: int) -> int:
         """Where words of address and tag questions starting at ``i`` end, commas between ("..., *dear*",

@@ -4369,3 +4369,11 @@ def test_a_statement_before_a_question_whether_a_thing_was_seen(
     whether it was seen asks to find it, as it does alone ("have you seen my phone?")."""
     got = frames(text, library)
     assert [(f, {r: h for r, h in roles.items() if r != "ground"}) for f, roles in got] == want
+
+
+@pytest.mark.parametrize("text", ["fetch the towel, then I want you to polish it", "I'd like you to polish the vase"])
+def test_a_verb_no_frame_lists_after_a_wish_that_the_robot_act_is_refused_at_it(text: str, library: Library) -> None:
+    """words46: after a comma the wish and its unknown verb were dropped as a remark (the step vanished silently);
+    alone the command was refused at "I" ("unknown verb 'i'")."""
+    with pytest.raises(CommandError, match="unknown verb 'polish'"):
+        parse_command(text, library)

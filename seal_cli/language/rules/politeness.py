@@ -143,7 +143,8 @@ def _politeness(s: State, i: int) -> Match | None:
         k += 1                                        # "the task is*:* bring me ...", "here's what I need*:* go ..."
     elif n == 2 and words[i + 1].lower in _ANNOUNCED:
         return None                                   # "your job" with no colon: no announcement ("your job is done")
-    if n > 1 and words[i + n - 1].lower in _VERB_NEXT | _ANNOUNCING and not s.verb_after(k):
+    if n > 1 and words[i + n - 1].lower in _VERB_NEXT | _ANNOUNCING and not s.verb_after(k) and \
+            not _unknown_verb_wished(s, i, n):
         return None                                   # "help me to the bathroom": "help" is the verb said (words27);
         #   "what about the dishes?": a question, no suggestion of a deed ("what about closing it": words30)
     if n and not (n == 1 and low in ("and", "then") and not s.out and not s.verb_after(i + 1) and
@@ -152,6 +153,17 @@ def _politeness(s: State, i: int) -> Match | None:
             i + n >= len(words) and n > 1):
         return Match(n, (merge(words, i, n, Tag.POLITE),))
     return None                                       # "bring one. then *go*": a verb said last is no politeness
+
+
+def _unknown_verb_wished(s: State, i: int, n: int) -> bool:
+    """Whether the formula of ``n`` words at ``i`` wishes the robot do something ("I want *you to*", "we need you to")
+    and a verb's base form no frame lists follows: the formula is politeness, so the command is refused at that verb
+    ("I want you to polish it": "unknown verb 'polish'", not "'i'"; after a comma it was dropped as a remark,
+    words46)."""
+    words = s.words
+    k = i + n
+    return n > 2 and words[k - 2].lower == "you" and words[k - 1].lower == "to" and k < len(words) and \
+        words[k].lower.isalpha() and verb_lemma(words[k].lower) == words[k].lower and in_verb_tables(words[k].lower)
 
 
 _QUESTION_FIRST = QUESTION_WORDS | {"where", "where's", "whereabouts", "how"}
