@@ -37,19 +37,34 @@ def _found_stated(s: State, i: int) -> Match | None:
     words = s.words
     if s.out and not (s.out[-1].tag == Tag.SEP and s.out[-1].lower in END_MARKS):
         return None
-    n = longest_phrase(words, i, FOUND_STATED)
-    if not n or not s.np_starts(i + n):
+    j = _place_before_found(s, i)
+    n = longest_phrase(words, j, FOUND_STATED)
+    if not n or not s.np_starts(j + n):
         return None
-    comma = next((k for k in range(i + n + 1, len(words)) if words[k].lower in (",", ";") or
+    comma = next((k for k in range(j + n + 1, len(words)) if words[k].lower in (",", ";") or
                   words[k].lower in END_MARKS or words[k].lower in ("and", "then")), len(words))
     if comma + 1 >= len(words) or words[comma].lower not in (",", ";") or \
             words[comma + 1].lower in ("and", "then") or not s.verb_after(comma + 1):
         return None
-    if not any(PREPOSITIONS.get(w.lower) in LOCATIVE for w in words[i + n + 1:comma]) or \
-            any(s.verb_at(k) is not None for k in range(i + n, comma)):
+    if not (j > i or any(PREPOSITIONS.get(w.lower) in LOCATIVE for w in words[j + n + 1:comma])) or \
+            any(s.verb_at(k) is not None and words[k - 1].lower not in NP_OPENERS for k in range(j + n, comma)):
         return None
     return Match(comma + 1 - i, (merge(words, i, comma + 1 - i, Tag.POLITE),),
                  remarks=((words[i].start, words[comma - 1].end),))
+
+
+def _place_before_found(s: State, i: int) -> int:
+    """Where the words of coming upon start after a phrase of place said first ("*in the bathroom* you'll find Morgan,
+    ..."), else ``i``: a preposition of where a thing is and a few words with no comma or verb."""
+    words = s.words
+    if PREPOSITIONS.get(words[i].lower) not in LOCATIVE or not s.np_starts(i + 1):
+        return i
+    for k in range(i + 2, min(len(words), i + 8)):
+        if longest_phrase(words, k, FOUND_STATED):
+            return k
+        if not words[k].lower.isalpha() or s.verb_at(k) is not None and words[k - 1].lower not in NP_OPENERS:
+            return i                              # "in the *shed*": a noun after its determiner
+    return i
 
 
 def _her_told(s: State, i: int) -> Match | None:
@@ -182,7 +197,9 @@ FOUND_STATED_RULE = Rule("where you will find it", _found_stated, (
     Example("you'll find Noor by the piano, take her to the garden", "you'll find Noor by the piano,", Tag.POLITE),
     Example("you will find the keys in the drawer, bring them to me", "you will find the keys in the drawer,",
             Tag.POLITE),
-), first_words(FOUND_STATED), "'you'll find X in Y, V it': where X is, a remark the command's pronoun names",
+    Example("in the shed you'll find a rake, bring it to me", "in the shed you'll find a rake,", Tag.POLITE),
+), first_words(FOUND_STATED) | frozenset(p for p, canonical in PREPOSITIONS.items() if canonical in LOCATIVE),
+    "'you'll find X in Y, V it': where X is, a remark the command's pronoun names",
     after=frozenset([START, Tag.SEP]))
 HER_TOLD = Rule("her told", _her_told, (
     Example("tell her we're moving", "her", Tag.PRON),
