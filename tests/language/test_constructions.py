@@ -4342,6 +4342,7 @@ def test_a_place_said_before_an_existential_with_a_modal(
      [("Guide", {"theme": "Noor", "source": "piano", "goal": "garden"})]),
     ("you will find the towels in the closet, bring them to me",
      [("Bring", {"theme": "towel", "recipient": "me", "source": "closet"})]),
+    ("in the study you'll find Noor, greet her", [("Greet", {"theme": "Noor"})]),
     ("you'll find the towels in the closet and bring them to me",                 # two steps, joined by "and"
      [("Find", {"theme": "towel", "ground": "closet"}), ("Bring", {"theme": "towel", "recipient": "me"})]),
 ])
