@@ -100,7 +100,7 @@ class Roles:
             if objects and "recipient" in have:
                 roles["recipient"] = objects.pop(0)
         elif topic is not None:
-            roles[first] = topic.np              # "tell robin *about the weather*": what is told is about it
+            roles["message"] = topic.np             # "tell robin *about the weather*": what is told is about it
             if len(objects) == 1 and "recipient" in have:
                 roles["recipient"] = objects.pop(0)   # the one told, whatever kind of word names them
         elif len(objects) >= 2:
