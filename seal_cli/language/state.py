@@ -689,8 +689,8 @@ class State:
         a request, no statement, wherever a clause starts ("get the plum, and then I want you to give it to me": it
         was dropped as a remark, words46)."""
         n = match_phrase(self.words, i, POLITE)
-        if n <= 2 or i + n >= len(self.words):
-            return False
+        if n <= 2 or i + n >= len(self.words) or self.words[i].lower.split("'")[0] not in ("i", "we"):
+            return False                  # "tell mum *you have to go*": what is told, no wish of the speaker
         low = self.words[i + n].lower
         return self.verb_after(i + n) or low.isalpha() and verb_lemma(low) == low and in_verb_tables(low)
         #   a verb no frame lists is refused at it, never dropped with the remark ("..., then I want you to polish it")
