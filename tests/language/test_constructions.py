@@ -2468,7 +2468,7 @@ def test_and_another_person_too_is_the_clause_again_for_them(
 
 @pytest.mark.parametrize(("text", "want"), [
     ("give me the book Tom lent you", [("Give", {"theme": "book", "recipient": "me"})]),
-    ("answer the question Ella asked", [("Answer", {"theme": "question"})]),
+    ("answer the question Ella asked", [("Answer", {"theme": "question", "recipient": "Ella"})]),   # words46: hers
     ("put the plate Anna used in the sink", [("Place", {"theme": "plate", "goal": "sink"})]),
 ])
 def test_a_relative_clause_of_a_name_without_that_describes_the_noun(
