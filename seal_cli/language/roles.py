@@ -57,7 +57,7 @@ _POINTED = frozenset(["here", "there", "over here", "over there"])
 
 PREPOSITION_ROLES: Mapping[str, Sense] = {
     **{p: Sense(("recipient", "goal"), ("goal",)) for p in TO},
-    "for": Sense(("recipient", "goal"), ()),
+    "for": Sense(("recipient",), ()),           # "follow them *for me*": for whom, never where (words46)
     **{p: Sense(("source",), ("source",)) for p in FROM},
     "with": Sense(("instrument",), ("instrument",)),
     **{p: Sense(_WHERE, _WHERE) for p in LOCATIVE},

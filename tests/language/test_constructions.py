@@ -4378,3 +4378,14 @@ def test_a_verb_no_frame_lists_after_a_wish_that_the_robot_act_is_refused_at_it(
     alone the command was refused at "I" ("unknown verb 'i'")."""
     with pytest.raises(CommandError, match="unknown verb 'polish'"):
         parse_command(text, library)
+
+
+@pytest.mark.parametrize(("text", "want"), [
+    ("follow them for me", [("Follow", {"theme": "them"})]),
+    ("walk Noor to the gate for me", [("Guide", {"theme": "Noor", "goal": "gate"})]),
+    ("get a towel for grandma", [("Bring", {"theme": "towel", "recipient": "grandma"})]),           # as before
+])
+def test_for_a_person_is_for_whom_never_where(
+        text: str, want: list[tuple[str, dict[str, str]]], library: Library) -> None:
+    """words46: "follow them for me" made "me" Follow's goal (after it was no longer read as a Bring)."""
+    assert_reads(text, want, library)
