@@ -2583,7 +2583,9 @@ COUNT_TAIL_DROPPED = Rule("how many are there, after the phrase counted", _count
 FRONTED_UNMARKED = Rule("phrase said first, no comma", _fronted_unmarked, (
     Example("From the dresser take the hairbrush", "take", Tag.VERB),
     Example("In the kitchen how many people are standing?", "how many", Tag.VERB),
-), lambda low: low.isalpha(), "a phrase of place said before the verb with no comma: the clause starts at the verb",
+    Example("in the garage you'll find a ladder and bring it here", "you'll", Tag.POLITE),      # words46
+), lambda low: low.isalpha() or low in POLITE, "a phrase of place said before the verb with no comma: the clause "
+   "starts at the verb (or at politeness before it)",
    after=frozenset([Tag.WORD, Tag.NAME]))
 FRONTED_END = Rule("phrase said first", _fronted_end, (
     Example("From the cupboard, give me the bowl", ",", Tag.SEP),
