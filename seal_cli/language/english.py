@@ -520,6 +520,17 @@ FOLLOW_ASKED = ("guide", frozenset(["ask", "tell", "get", "invite"]),
 """A person asked to follow the robot ("*ask* Anna *to follow you* to the kitchen", "tell the man in the hat to come
 with you"): the robot leads them, the unit ``FOLLOW_ASKED[0]`` (words42: it was a Tell of "follow you to the
 kitchen", nobody led). The verbs of asking, and what the person is asked."""
+FOUND_STATED = frozenset(["you'll find", "you will find", "you can find", "you should find", "you'll see",
+                          "you will see", "you'll spot", "you will spot"])
+""""*You'll find* Axel by the bookshelf, lead him to the kitchen": where the hearer will come upon someone or something
+is a statement of where they are, as "Axel is by the bookshelf" is, when a comma and a command follow it (words46:
+it was a Find of Axel before the leading). "you'll find the keys in the drawer *and* bring them" stays two steps."""
+HELPED_MOVING = ("guide", frozenset(["go", "get", "come", "walk", "move", "head", "return"]),
+                 frozenset(["to", "into", "towards", "toward", "back", "there", "here", "upstairs", "downstairs",
+                            "outside", "inside", "home"]))
+"""A person helped to move somewhere ("*help* him *get* to the kitchen", "help Sam go back to his room", "help her get
+there"): the robot leads them, the unit ``HELPED_MOVING[0]`` (words46: it was a Go of the robot, the person dropped).
+The verbs of moving (lemmas), and the words of where that must follow them ("help her get dressed" is no leading)."""
 WISHED_PLACES = frozenset(["on", "onto", "in", "into", "inside", "under"])
 PLACE_MEANS = "put"
 """"*I want* the mug *on* the shelf", "I'd like the books in the box": the speaker's wish for where a thing is,

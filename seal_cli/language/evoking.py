@@ -43,6 +43,10 @@ if TYPE_CHECKING:
 __all__ = ["Evoker", "Fit"]
 
 
+_ASKERS = frozenset(["he", "she", "they", "him", "her", "them"])
+"""Pronouns of a person whose question is answered ("answer whatever *she* asks you", "the question *they* ask")."""
+
+
 Fit = tuple[tuple[float, ...], Frame, dict[str, Any], list[tuple[NP, PP]]]
 """A frame chosen for a clause: its key (higher is better), the frame, its elements (role → phrase)
 and the phrases that describe a noun instead (:data:`seal_cli.language.roles.Assignment`)."""
@@ -599,8 +603,9 @@ class Evoker:
         _, frame, _, _ = best
         first = frame.elements[0] if frame.elements else None
         if first is None or not self.types.is_person(first.type) or not clause.objects or \
-                self.roles.kind(clause.objects[-1], None, None) == "person" or not self.recipient_said(clause):
-            return best
+                self.roles.kind(clause.objects[-1], None, None) in ("person", "pronoun") or \
+                not self.recipient_said(clause):
+            return best                      # "greet *them* for me": no thing said they could be, so people (words46)
         thing = clause.objects[-1]
         if thing.head_text in ROUTE_NOUNS:
             return best                      # "show them the way (to the kitchen)": leading them, as chosen
@@ -972,6 +977,8 @@ class Evoker:
             roles["recipient"] = theme.possessor
         elif theme.of is not None and theme.of.kind == "person" and theme.of.pronoun is None:
             roles["recipient"] = replace(theme.of, end=max(theme.of.end, theme.end))
+        elif theme.of is not None and theme.of.pronoun in _ASKERS:
+            roles["recipient"] = theme.of      # "answer whatever *she* asks you" (words46): the asker, a pronoun
 
     def carry_on(self, frame: Frame, roles: Mapping[str, Any], attached: list[tuple[NP, PP]]) -> None:
         """"Put an apple in a pan *on the table*": a container the theme goes into, said to be in

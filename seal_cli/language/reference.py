@@ -20,7 +20,16 @@ from dataclasses import replace
 from seal_cli.frames.library import Library
 from seal_cli.frames.model import Frame
 from seal_cli.language.element_types import Types
-from seal_cli.language.english import BESIDE, FOUND_THERE, LOCATED, NP_OPENERS, PREPOSITIONS, PRONOUNS, is_room_word
+from seal_cli.language.english import (
+    BESIDE,
+    FOUND_THERE,
+    LOCATED,
+    MODALS,
+    NP_OPENERS,
+    PREPOSITIONS,
+    PRONOUNS,
+    is_room_word,
+)
 from seal_cli.language.lexicon import Mention, Word, mentions, noun_lemma
 from seal_cli.language.morphology import is_plural, parts_of_speech, plural_only
 from seal_cli.language.syntax import NP
@@ -348,9 +357,12 @@ class Reference:
             m = replace(m, end=end, head=words[-2])
         opening = self.text[span[0]:m.start].lower().split()
         between = self.text[m.end:said.start].lower().replace("'s", " 's").split()
+        if between[1:2] and between[1] in MODALS and between[2:3] == ["be"]:
+            between = between[:1] + between[2:]              # "in the garage there *should be* a ladder" (words46)
         found = " ".join(between).replace(" 's", "'s") in FOUND_THERE     # "... *you'll find* some crisps" (words47)
-        if not opening or " ".join(opening) not in (*LOCATED, *BESIDE) or not found and (
-                between[:1] != ["there"] or len(between) < 2 or between[1] not in ("is", "are", "'s", "was", "were")):
+        there_is = between[:1] == ["there"] and between[1:2] != [] and \
+            between[1] in ("is", "are", "'s", "was", "were", "be")
+        if not opening or " ".join(opening) not in (*LOCATED, *BESIDE) or not found and not there_is:
             return None
         return m
 

@@ -39,6 +39,10 @@ PUT_IN = ("in", "on", "inside", "into", "onto")
 """Prepositions that say a thing is put in or on another."""
 
 
+_SAID_INDEFINITE = frozenset(["a", "an", "some", "any", "something", "anything", "everything", "nothing"])
+"""First words of a telling's object that say what is said, not to whom ("say *something* about yourself")."""
+
+
 @dataclass(frozen=True)
 class Sense:
     """The roles a preposition's phrase may fill, in the order they are tried."""
@@ -53,7 +57,7 @@ _POINTED = frozenset(["here", "there", "over here", "over there"])
 
 PREPOSITION_ROLES: Mapping[str, Sense] = {
     **{p: Sense(("recipient", "goal"), ("goal",)) for p in TO},
-    "for": Sense(("recipient", "goal"), ()),
+    "for": Sense(("recipient",), ()),           # "follow them *for me*": for whom, never where (words46)
     **{p: Sense(("source",), ("source",)) for p in FROM},
     "with": Sense(("instrument",), ("instrument",)),
     **{p: Sense(_WHERE, _WHERE) for p in LOCATIVE},
@@ -88,10 +92,17 @@ class Roles:
             any(isinstance(x, PP) and x.prep == "for" for x in clause.items)
         if seek and objects:                 # "search the kitchen for a can opener": the kitchen is searched
             roles["ground"] = objects.pop(0)
+        topic = self.topic(clause) if first == "message" and clause.message is None and (
+            not objects or len(objects) == 1 and self.told_whom(objects[0]) and
+            not any(isinstance(x, PP) and x.prep in TO for x in clause.items)) else None
         if clause.message is not None and first is not None:
             roles[first] = clause.message
             if objects and "recipient" in have:
                 roles["recipient"] = objects.pop(0)
+        elif topic is not None:
+            roles["message"] = topic.np             # "tell robin *about the weather*": what is told is about it
+            if len(objects) == 1 and "recipient" in have:
+                roles["recipient"] = objects.pop(0)   # the one told, whatever kind of word names them
         elif len(objects) >= 2:
             if "recipient" in have:
                 roles["recipient"] = objects.pop(0)
@@ -119,6 +130,9 @@ class Roles:
                 previous = item
                 continue
             if not isinstance(item, PP):
+                continue
+            if item is topic:
+                previous = item.np
                 continue
             if seek and item.prep == "for" and "theme" not in roles:
                 roles["theme"] = item.np          # "... for a can opener", "look in the closet for my scarf"
@@ -159,6 +173,21 @@ class Roles:
             previous = item.np
         score = sum(self.fit(frame, role, np) for role, np in roles.items())
         return roles, attached, score
+
+    def told_whom(self, np: NP) -> bool:
+        """Whether a telling's one object may be the one told, with what it is about said after it ("tell *robin*
+        about the weather"): not an indefinite thing said ("say *something* about yourself", "tell *a joke* about
+        cats": what is said)."""
+        said = self.reference.text[np.start:np.end].lower().split()
+        return bool(said) and said[0] not in _SAID_INDEFINITE and np.pronoun not in _SAID_INDEFINITE
+
+    @staticmethod
+    def topic(clause: Clause) -> PP | None:
+        """The phrase a telling is about ("tell Sam *about the party*", "speak to the guests about dinner"): the
+        first "about" phrase of the clause that describes no noun. It is the message when no object but the one told
+        is said (words46: "tell robin in the kitchen about the weather" told "robin in the kitchen" to nobody); "tell
+        them *something* about yourself", "say something about yourself to Jo" keep it on the thing said."""
+        return next((x for x in clause.items if isinstance(x, PP) and x.prep == "about" and not x.describes), None)
 
     @staticmethod
     def searches(frame: Frame, unit: str) -> bool:

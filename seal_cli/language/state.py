@@ -56,6 +56,7 @@ from seal_cli.language.english import (
     QUESTION_WORDS,
     RELATIVES,
     REQUESTS,
+    SEEN_ASKED,
     SEEN_QUESTIONS,
     SEPARATOR_WORDS,
     SEQUENCE_ADVERBS,
@@ -122,6 +123,11 @@ for _table in (PREPOSITIONS, POLITE, _FORMULAE, SEPARATOR_WORDS, SEQUENCE_ADVERB
             _PHRASES[_two] = (*_PHRASES.get(_two, ()), (_phrase, _parts))
 _PHRASES = {first: tuple(sorted(found, key=lambda item: -len(item[1]))) for first, found in _PHRASES.items()}
 _PHRASE_FIRST = frozenset(first for first, _ in _PHRASES)
+
+_SEEING_FIRST = frozenset(p.split()[0] for p in SEEN_ASKED[2])
+"""First words of the verbs of a question whether a thing was seen ("have you *seen* ...", "did anyone *come*
+across")."""
+
 
 def first_words(phrases: Iterable[str]) -> frozenset[str]:
     """The words the phrases start with: where a rule reading them can start (its gate)."""
@@ -229,6 +235,10 @@ def subject_word(word: Word) -> bool:
     low = word.lower
     return low in SUBJECTS and low not in OBJECT_PRONOUNS or \
         "'" in low and low.split("'")[0] in SUBJECTS and "'" + low.split("'", 1)[1] in CONTRACTED
+
+
+_HELPED = frozenset(["him", "her", "them"])
+"""Pronouns of the person helped in "help *her* find ..." ("help me/us" are politeness of ``POLITE``)."""
 
 
 def statement_lead(word: Word, nxt: Word) -> bool:
@@ -480,10 +490,36 @@ class State:
                 continue
             break
         if i < len(self.words) and (self.verb_at(i) is not None or self.use_at(i) or
-                                    self.words[i].lower in LIGHT_VERBS and self.light_verb(i) is not None):
+                                    self.words[i].lower in LIGHT_VERBS and self.light_verb(i) is not None or
+                                    self.words[i].lower == "help" and self.helped_verb(i)):
             return True                 # "go and *have a look for* the sponge": a light verb (words40)
         return start < i and (start < len(self.words) and self.verb_at(start) is not None or
                               said != start and self.verb_at(said) is not None)
+
+    def helped_verb(self, i: int) -> int:
+        """Where the verb helped with starts after "help" at ``i`` (0: none): "help", the person (a pronoun, one
+        name, or a person's noun the taxonomy knows, maybe after its determiner and up to two adjectives: "help *the
+        old man*"), maybe "to", then a verb of the library in its base form ("help Jane find her keys", "help the
+        guest to find a seat")."""
+        words = self.words
+        if words[i].lower != "help" or i + 2 >= len(words):
+            return 0
+        k = i + 1
+        if words[k].lower in DETERMINERS:
+            k += 1
+            while k + 1 < len(words) and k < i + 4 and is_adjective(words[k].lower) and \
+                    (noun_lemma(words[k].lower) or words[k].lower) not in self.lexicon.people:
+                k += 1                  # "help the *old* man get to the exit" (words46)
+            if k >= len(words):
+                return 0
+        person = words[k].lower
+        if not (person in _HELPED and k == i + 1 or capitalised(words[k]) and k == i + 1 or
+                (noun_lemma(person) or person) in self.lexicon.people):
+            return 0
+        k += 1 + (k + 1 < len(words) and words[k + 1].lower == "to")
+        if k >= len(words) or verb_lemma(words[k].lower) != words[k].lower or self.verb_at(k) is None:
+            return 0
+        return k
 
     def formula(self, i: int) -> int:
         """How many words a politeness formula said as a whole clause takes at ``i`` (0: none): it
@@ -545,6 +581,8 @@ class State:
             return end                                        # "noah has to get to the garage": a name (words24)
         if verb_lemma(first) == first and first not in SUBJECTS:
             return 0                                          # "Grab the cup": a command, maybe an unknown verb
+        if self.wish_of_deed(i):
+            return 0                                          # "..., then *I want you to* give it to me": a request
         if first in BASE_FORM_SUBJECTS and nxt.isalpha() and nxt not in PREPOSITIONS:
             return end                                        # "we open at six", "I need a hand": no command
         if first in ("you'll", "you'd", "you") and match_phrase(words, i, YOU_MUST) and \
@@ -650,6 +688,18 @@ class State:
         nxt = self.words[k + 1].lower if k + 1 < end else ""
         return bool(nxt) and (nxt in PREPOSITIONS or nxt in NP_OPENERS or nxt == "to"
                               or nxt in OBJECT_PRONOUNS or bool(gerund_lemma(nxt)))   # "a guest *left* it"
+
+    def wish_of_deed(self, i: int) -> bool:
+        """Whether a wish that the robot do something starts at ``i`` ("*I want you to* give it to me", "we need you
+        to close the gate": a polite formula of ``POLITE`` that starts with its subject, then a verb of the library):
+        a request, no statement, wherever a clause starts ("get the plum, and then I want you to give it to me": it
+        was dropped as a remark, words46)."""
+        n = match_phrase(self.words, i, POLITE)
+        if n <= 2 or i + n >= len(self.words) or self.words[i].lower.split("'")[0] not in ("i", "we"):
+            return False                  # "tell mum *you have to go*": what is told, no wish of the speaker
+        low = self.words[i + n].lower
+        return self.verb_after(i + n) or low.isalpha() and verb_lemma(low) == low and in_verb_tables(low)
+        #   a verb no frame lists is refused at it, never dropped with the remark ("..., then I want you to polish it")
 
     def vocatives_end(self, i: int) -> int:
         """Where words of address and tag questions starting at ``i`` end, commas between ("..., *dear*",
@@ -785,8 +835,11 @@ class State:
             return 0
         for k in range(i + n + 1, len(words) - 1):
             low = words[k].lower
-            if low == "there" and words[k + 1].lower in BE_WORDS or longest_phrase(words, k, FOUND_THERE):
-                return k                          # "... *you'll find* some crisps": what is there (words47)
+            if low == "there" and (words[k + 1].lower in BE_WORDS or words[k + 1].lower in MODALS and
+                                   k + 2 < len(words) and words[k + 2].lower == "be") \
+                    or longest_phrase(words, k, FOUND_THERE):
+                # "in the kitchen there *should be* someone" (words46); "... *you'll find* some crisps" (words47)
+                return k
             if not low.isalpha() or low in END_MARKS or self.verb_at(k) is not None and \
                     words[k - 1].lower not in NP_OPENERS:
                 return 0                          # "in the *study* there are three mugs": a noun (words26)
@@ -982,6 +1035,10 @@ class State:
         words = self.words
         if words[k].lower in QUESTION_WORDS:
             return True
+        auxiliaries, subjects, seeing = SEEN_ASKED
+        if words[k].lower in auxiliaries and k + 2 < len(words) and words[k + 1].lower in subjects and \
+                verb_lemma(words[k + 2].lower) in _SEEING_FIRST:
+            return True                 # "I'm looking for my phone, *have you seen* it anywhere?" (words46)
         return any(all(k + m < len(words) and words[k + m].lower == part for m, part in enumerate(phrase.split()))
                    for phrase in (*WHERE_QUESTIONS, *REQUESTS) if phrase.split()[0] == words[k].lower)
 

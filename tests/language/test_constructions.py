@@ -2468,7 +2468,7 @@ def test_and_another_person_too_is_the_clause_again_for_them(
 
 @pytest.mark.parametrize(("text", "want"), [
     ("give me the book Tom lent you", [("Give", {"theme": "book", "recipient": "me"})]),
-    ("answer the question Ella asked", [("Answer", {"theme": "question"})]),
+    ("answer the question Ella asked", [("Answer", {"theme": "question", "recipient": "Ella"})]),   # words46: hers
     ("put the plate Anna used in the sink", [("Place", {"theme": "plate", "goal": "sink"})]),
 ])
 def test_a_relative_clause_of_a_name_without_that_describes_the_noun(
@@ -4376,3 +4376,148 @@ def test_a_denial_before_another_verb_takes_the_clause_back(
     same verb said again does. "sorry, then ..." is still a next step."""
     parse = parse_command(text, library)
     assert [(f.frame, {r: e.head for r, e in f.elements.items() if not e.default}) for f in parse.frames] == want
+
+
+# words46 -------------------------------------------------------------------------------------------------------------
+
+
+@pytest.mark.parametrize(("text", "want"), [
+    ("grab the towel, then I'd like you to hang it on the hook",
+     [("Pick", {"theme": "towel"}), ("Place", {"theme": "towel", "goal": "hook"})]),
+    ("open the shed, and then we need you to bring out the mower", [("Open", {"theme": "shed"}),
+                                                                    ("Bring", {"theme": "mower"})]),
+])
+def test_a_wish_that_the_robot_act_after_a_joint_is_a_request_not_a_remark(
+        text: str, want: list[tuple[str, dict[str, str]]], library: Library) -> None:
+    """words46: after ", then" the subject "I"/"we" read the wish as a statement beside the command, and the step after
+    it was dropped as a remark (no error: the verb vanished)."""
+    assert_reads(text, want, library)
+    assert frames("shut the gate, I need you here", library) == [("Close", {"theme": "gate"})]   # a statement still
+
+
+@pytest.mark.parametrize(("text", "want"), [
+    ("tell grandma about the parcel", [("Tell", {"message": "parcel", "recipient": "grandma"})]),
+    ("could you tell noor in the garden about the storm", [("Tell", {"message": "storm", "recipient": "noor"})]),
+    ("speak to the visitors about the schedule", [("Tell", {"message": "schedule", "recipient": "visitor"})]),
+    ("tell me about the man by the gate", [("Tell", {"message": "man", "recipient": "me"})]),
+    ("say something about the weather", [("Tell", {"message": "something"})]),           # what is said, not to whom
+    ("tell a story about dragons", [("Tell", {"message": "story"})]),
+])
+def test_what_a_telling_is_about_is_its_message(
+        text: str, want: list[tuple[str, dict[str, str]]], library: Library) -> None:
+    """words46: "tell X about Y" — the "about" phrase described the person told ("noor about the storm"), or the person
+    (a word no dictionary calls one) was the message and nobody was told."""
+    assert_reads(text, want, library)
+
+
+@pytest.mark.parametrize(("text", "want"), [
+    ("help grandpa get to the garden", [("Guide", {"theme": "grandpa", "goal": "garden"})]),
+    ("please help the old man go back to his room", [("Guide", {"theme": "man", "goal": "room"})]),
+    ("Noor needs to get to the shed, help her get there", [("Guide", {"theme": "Noor", "goal": "shed"})]),
+    ("help Jo find her keys", [("Find", {"theme": "key"})]),                                 # a deed helped: as before
+])
+def test_helping_a_person_move_somewhere_is_leading_them(
+        text: str, want: list[tuple[str, dict[str, str]]], library: Library) -> None:
+    """words46: "help him get to the kitchen" was a Go of the robot and the person was dropped; after a statement
+    ("..., help her get there") the whole was refused as a statement ("help" is no verb of the library)."""
+    assert_reads(text, want, library)
+
+
+@pytest.mark.parametrize(("text", "want"), [
+    ("follow Noor wherever she wants to go", [("Follow", {"theme": "Noor"})]),
+    ("go with jo wherever he needs to go", [("Follow", {"theme": "jo"})]),
+])
+def test_a_free_relative_of_place_with_a_wish_is_a_remark(
+        text: str, want: list[tuple[str, dict[str, str]]], library: Library) -> None:
+    """words46: the base form after "wants to" was read as a command of the robot and the free relative refused."""
+    assert_reads(text, want, library)
+
+
+@pytest.mark.parametrize(("text", "want"), [
+    ("answer whatever the girl by the window asks you", [("Answer", {"theme": "whatever", "recipient": "girl"})]),
+    ("answer the questions that the visitor in the hall asks",
+     [("Answer", {"theme": "question", "recipient": "visitor"})]),
+    ("greet Jo and answer the question he asks you", [("Greet", {"theme": "Jo"}),
+                                                      ("Answer", {"theme": "question", "recipient": "Jo"})]),
+])
+def test_what_a_person_asks_is_their_question(
+        text: str, want: list[tuple[str, dict[str, str]]], library: Library) -> None:
+    """words46: "answer whatever X asks you" was refused ("whatever" no element took), "the question he asks you"
+    answered "he asks you" to "the question"; the asker is whose question it is, as "the question of X" says."""
+    assert_reads(text, want, library)
+
+
+@pytest.mark.parametrize(("text", "want"), [
+    ("I want the scarf that's on the chair", [("Bring", {"theme": "scarf", "recipient": "me", "source": "chair"})]),
+    ("I want the scarf on the chair", [("Place", {"theme": "scarf", "goal": "chair"})]),          # a wish placed
+])
+def test_a_thing_wished_for_with_a_relative_of_where_it_is_is_brought(
+        text: str, want: list[tuple[str, dict[str, str]]], library: Library) -> None:
+    """words46: "I want the juice that's on the shelf" was a wish to put the juice on the shelf."""
+    assert_reads(text, want, library)
+
+
+@pytest.mark.parametrize(("text", "want"), [
+    ("in the garage there should be a ladder, bring it to me",
+     [("Bring", {"theme": "ladder", "recipient": "me", "source": "garage"})]),
+    ("in the hall there might be someone waiting, greet them", [("Greet", {"theme": "someone", "ground": "hall"})]),
+])
+def test_a_place_said_before_an_existential_with_a_modal(
+        text: str, want: list[tuple[str, dict[str, str]]], library: Library) -> None:
+    """words46: "in the kitchen there *should be* someone" was refused ("should" an unknown verb); "there is" was
+    read."""
+    assert_reads(text, want, library)
+
+
+@pytest.mark.parametrize(("text", "want"), [
+    ("you'll find Noor by the piano, take her to the garden",
+     [("Guide", {"theme": "Noor", "source": "piano", "goal": "garden"})]),
+    ("you will find the towels in the closet, bring them to me",
+     [("Bring", {"theme": "towel", "recipient": "me", "source": "closet"})]),
+    ("in the study you'll find Noor, greet her", [("Greet", {"theme": "Noor"})]),
+    ("you'll find the towels in the closet and bring them to me",                 # two steps, joined by "and"
+     [("Find", {"theme": "towel", "ground": "closet"}), ("Bring", {"theme": "towel", "recipient": "me"})]),
+])
+def test_where_you_will_find_someone_is_a_statement_before_the_command(
+        text: str, want: list[tuple[str, dict[str, str]]], library: Library) -> None:
+    """words46: "you'll find Axel by the bookshelf, lead him ..." was a Find of Axel before the leading (words42 left
+    it); it says where he is, as "Axel is by the bookshelf, ..." does."""
+    assert_reads(text, want, library)
+
+
+def test_a_person_verb_said_of_them_for_someone_is_not_a_delivery(library: Library) -> None:
+    """words46: "greet them for me" was a Bring of "them" to me (the frame of showing a thing to someone: "them" with
+    no antecedent was taken for a thing); a verb whose object is a person keeps its frame."""
+    assert [f for f, _ in frames("greet them for me", library)] == ["Greet"]
+    assert [f for f, _ in frames("show me the remote", library)] == ["Bring"]          # a thing shown: as before
+
+
+@pytest.mark.parametrize(("text", "want"), [
+    ("I can't find my wallet, have you seen it anywhere?", [("Find", {"theme": "wallet"})]),
+    ("my scarf is gone, did anyone see it", [("Find", {"theme": "scarf"})]),
+])
+def test_a_statement_before_a_question_whether_a_thing_was_seen(
+        text: str, want: list[tuple[str, dict[str, str]]], library: Library) -> None:
+    """words46: the statement was kept as the command and refused ("... is a statement, no command"): a question
+    whether it was seen asks to find it, as it does alone ("have you seen my phone?")."""
+    got = frames(text, library)
+    assert [(f, {r: h for r, h in roles.items() if r != "ground"}) for f, roles in got] == want
+
+
+@pytest.mark.parametrize("text", ["fetch the towel, then I want you to polish it", "I'd like you to polish the vase"])
+def test_a_verb_no_frame_lists_after_a_wish_that_the_robot_act_is_refused_at_it(text: str, library: Library) -> None:
+    """words46: after a comma the wish and its unknown verb were dropped as a remark (the step vanished silently);
+    alone the command was refused at "I" ("unknown verb 'i'")."""
+    with pytest.raises(CommandError, match="unknown verb 'polish'"):
+        parse_command(text, library)
+
+
+@pytest.mark.parametrize(("text", "want"), [
+    ("follow them for me", [("Follow", {"theme": "them"})]),
+    ("walk Noor to the gate for me", [("Guide", {"theme": "Noor", "goal": "gate"})]),
+    ("get a towel for grandma", [("Bring", {"theme": "towel", "recipient": "grandma"})]),           # as before
+])
+def test_for_a_person_is_for_whom_never_where(
+        text: str, want: list[tuple[str, dict[str, str]]], library: Library) -> None:
+    """words46: "follow them for me" made "me" Follow's goal (after it was no longer read as a Bring)."""
+    assert_reads(text, want, library)

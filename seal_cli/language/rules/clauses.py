@@ -281,7 +281,7 @@ RELATIVE = Rule("relative clause", _relative, (
    "'with X in it')")
 CONTACT_RELATIVE = Rule("relative clause of a name, no that", _contact_relative, (
     Example("give me the book Tom lent you", "Tom lent you", Tag.REL),
-    Example("answer the question Ella asked", "Ella asked", Tag.REL),
+    Example("bring me the note Ella wrote", "Ella wrote", Tag.REL),     # words46: "the question Ella asked": hers
     Example("bring me the mug Sam left on the sofa", "Sam left", Tag.REL),
 ), lambda low: low.isalpha() and low not in CLOSED, "a name and a past verb after a noun: a relative clause "
    "without 'that'", after=frozenset([Tag.WORD]))
@@ -331,10 +331,21 @@ def _wherever(s: State, i: int) -> Match | None:
             words[i + 1].lower not in _FREE_SUBJECTS:
         return None
     end = s.cond_end(i + 1)
-    if end < i + 3 or any(s.verb_at(k) is not None and verb_lemma(words[k].lower) == words[k].lower
-                          for k in range(i + 3, end)):
+    if end < i + 3 or any(s.verb_at(k) is not None and verb_lemma(words[k].lower) == words[k].lower and
+                          not _wished_by_subject(words, k) for k in range(i + 3, end)):
         return None
     return Match(end - i, remarks=((words[i].start, words[end - 1].end),))
+
+
+_WISHING = frozenset(["want", "need", "like", "wish", "have", "plan", "choose", "decide"])
+"""Lemmas of the verbs whose "to" and base form say what the free relative's subject wishes ("wherever she *wants to
+go*"): the subject's verb, not the robot's."""
+
+
+def _wished_by_subject(words: list[Word], k: int) -> bool:
+    """Whether the base form at ``k`` follows "to" after a verb of wishing ("wherever he wants *to go*", words46: it
+    was read as a command of its own and the free relative refused)."""
+    return k >= 2 and words[k - 1].lower == "to" and verb_lemma(words[k - 2].lower) in _WISHING
 
 
 def _unjoined(s: State, i: int) -> Match | None:
@@ -552,6 +563,7 @@ VERB_AFTER_JOINT = Rule("verb after a joint", _verb_after_joint, (
 WHEREVER = Rule("wherever they go", _wherever, (
     Example("follow him wherever he goes", "wherever", ""),
     Example("stay with Jo everywhere she walks", "everywhere", ""),
+    Example("follow Noor wherever she wants to go", "wherever", ""),
 ), _FREE_PLACES, "'wherever he goes' after a clause: a free relative of place, a remark",
    after=frozenset([Tag.WORD, Tag.NAME, Tag.PRON]))
 UNJOINED = Rule("clause without a joint", _unjoined, (

@@ -217,6 +217,10 @@ _NO_PLURAL_ENDINGS = ("is", "us", "ss")
 in "s" and are no more than one, as "cheezits" and "oreos" are."""
 
 
+_NO_NOUNS = frozenset(["wherever", "whenever"])
+"""Open-class words after a name that start no noun phrase of it ("go with adel *wherever* she goes": words46)."""
+
+
 def _lower_case_name(s: State, i: int) -> Match | None:
     """A word neither an English dictionary nor the library's taxonomy lists, alone after "to" or "for" in a
     clause whose verb may have a recipient ("deliver the knife to *jamie*", "fetch a towel for *jo*"), or
@@ -246,7 +250,8 @@ def _lower_case_name(s: State, i: int) -> Match | None:
     near = s.prev_tag() == Tag.PREP and s.out[-1].info == "near" and f"{verb} with" in s.lexicon.escorts
     if s.prev_tag() == Tag.PREP and not (s.out[-1].info in ("to", "for") and verb in s.lexicon.recipients or
                                          s.out[-1].info == "with" and verb in s.lexicon.goals or near) or \
-            not low.isalpha() or w.text != low or low in CLOSED or low in s.lexicon.things or s.noun_follows(i + 1):
+            not low.isalpha() or w.text != low or low in CLOSED or low in s.lexicon.things or \
+            s.noun_follows(i + 1) and s.next_lower(i) not in _NO_NOUNS:
         return None
     if in_dictionary(low) and not ((s.prev_tag() == Tag.PREP or verb in s.lexicon.people_only) and
                                    parts_of_speech(low) == {"noun"} and not is_plural(low) and
@@ -327,6 +332,7 @@ LOWER_CASE_NAME = Rule("name in lower case", _lower_case_name, (
     Example("stay close to morgan", "morgan", Tag.NAME),
     Example("deliver the cup to robin in the kitchen", "robin", Tag.NAME),
     Example("go with angel to the kitchen", "angel", Tag.NAME),
+    Example("go with adel wherever she goes", "adel", Tag.NAME),
     Example("meet morgan at the door", "morgan", Tag.NAME),
     Example("dinner's ready, go tell ben", "ben", Tag.NAME),
 ), None, "a word no dictionary lists, alone after 'to' or 'for' (a clause that may have a recipient) or "

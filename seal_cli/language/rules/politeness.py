@@ -7,13 +7,14 @@ from seal_cli.language.english import (
     AS_ABLE,
     AS_ABLE_NOT_MANNER,
     ASKED_AGAIN,
-    DETERMINERS,
     END_MARKS,
     FREQUENCY_ADVERBS,
     GREETINGS,
+    HELPED_MOVING,
     KNOW_WISHES,
     NP_OPENERS,
     NUMBER_MEANS,
+    OBJECT_PRONOUNS,
     POLITE,
     QUESTION_MEANS,
     QUESTION_WORDS,
@@ -142,7 +143,8 @@ def _politeness(s: State, i: int) -> Match | None:
         k += 1                                        # "the task is*:* bring me ...", "here's what I need*:* go ..."
     elif n == 2 and words[i + 1].lower in _ANNOUNCED:
         return None                                   # "your job" with no colon: no announcement ("your job is done")
-    if n > 1 and words[i + n - 1].lower in _VERB_NEXT | _ANNOUNCING and not s.verb_after(k):
+    if n > 1 and words[i + n - 1].lower in _VERB_NEXT | _ANNOUNCING and not s.verb_after(k) and \
+            not _unknown_verb_wished(s, i, n):
         return None                                   # "help me to the bathroom": "help" is the verb said (words27);
         #   "what about the dishes?": a question, no suggestion of a deed ("what about closing it": words30)
     if n and not (n == 1 and low in ("and", "then") and not s.out and not s.verb_after(i + 1) and
@@ -151,6 +153,17 @@ def _politeness(s: State, i: int) -> Match | None:
             i + n >= len(words) and n > 1):
         return Match(n, (merge(words, i, n, Tag.POLITE),))
     return None                                       # "bring one. then *go*": a verb said last is no politeness
+
+
+def _unknown_verb_wished(s: State, i: int, n: int) -> bool:
+    """Whether the formula of ``n`` words at ``i`` wishes the robot do something ("I want *you to*", "we need you to")
+    and a verb's base form no frame lists follows: the formula is politeness, so the command is refused at that verb
+    ("I want you to polish it": "unknown verb 'polish'", not "'i'"; after a comma it was dropped as a remark,
+    words46)."""
+    words = s.words
+    k = i + n
+    return n > 2 and words[k - 2].lower == "you" and words[k - 1].lower == "to" and k < len(words) and \
+        words[k].lower.isalpha() and verb_lemma(words[k].lower) == words[k].lower and in_verb_tables(words[k].lower)
 
 
 _QUESTION_FIRST = QUESTION_WORDS | {"where", "where's", "whereabouts", "how"}
@@ -163,29 +176,39 @@ def _question_next(s: State, k: int) -> bool:
     return k < len(s.words) and s.words[k].lower in _QUESTION_FIRST
 
 
-_HELPED = frozenset(["him", "her", "them"])
-"""Pronouns of the person helped in "help *her* find ..." ("help me/us" are politeness of ``POLITE``)."""
-
-
 def _helping(s: State, i: int) -> Match | None:
     """"*Help Jane* find her keys", "help him carry the box to the car", "help the guest to find a seat": helping a
-    person do something is doing it (words33), as "help me find my keys" is: "help", the person (a pronoun, one
-    name, or a person's noun the taxonomy knows with its determiner), maybe "to", then a verb of the library in its
-    base form. "help her to the car" has no verb after the person: "help" is the verb said there."""
+    person do something is doing it (words33), as "help me find my keys" is. "help her to the car" has no verb after
+    the person: "help" is the verb said there."""
+    k = s.helped_verb(i)
+    return Match(k - i, (merge(s.words, i, k - i, Tag.POLITE),)) if k else None
+
+
+def _moving_helped(s: State, k: int) -> bool:
+    """Whether a verb of moving of ``HELPED_MOVING`` at ``k`` is followed by where to ("get *to* the kitchen", "go
+    *back*", "get *there*")."""
+    _, moving, where = HELPED_MOVING
     words = s.words
-    if words[i].lower != "help" or i + 2 >= len(words):
+    return k + 1 < len(words) and verb_lemma(words[k].lower) in moving and words[k + 1].lower in where
+
+
+def _helped_moving(s: State, i: int) -> Match | None:
+    unit = HELPED_MOVING[0]
+    k = s.helped_verb(i)
+    if not k or unit not in s.lexicon.units or not _moving_helped(s, k):
         return None
-    k = i + 1
-    if words[k].lower in DETERMINERS and k + 1 < len(words):
-        k += 1
-    person = words[k].lower
-    if not (person in _HELPED and k == i + 1 or capitalised(words[k]) and k == i + 1 or
-            (noun_lemma(person) or person) in s.lexicon.people):
+    verb = merge(s.words, i, 1, Tag.VERB, unit)
+    if k == i + 2 and s.words[i + 1].lower in OBJECT_PRONOUNS:     # "help *her* get there": the person, no "her X"
+        return Match(2, (verb, s.emit(i + 1, 1, Tag.PRON).words[0]), expect=False, verb=unit, using=False)
+    return Match(1, (verb,), expect=False, verb=unit, using=False)
+
+
+def _helped_moving_dropped(s: State, i: int) -> Match | None:
+    if s.verb_index < 0 or s.out[s.verb_index].lower != "help" or s.out[s.verb_index].info != HELPED_MOVING[0] or \
+            any(w.tag in (Tag.SEP, Tag.VERB, Tag.PREP) for w in s.out[s.verb_index + 1:]):
         return None
-    k += 1 + (k + 1 < len(words) and words[k + 1].lower == "to")
-    if k >= len(words) or verb_lemma(words[k].lower) != words[k].lower or s.verb_at(k) is None:
-        return None
-    return Match(k - i, (merge(words, i, k - i, Tag.POLITE),))
+    n = s.words[i].lower == "to"
+    return Match(n + 1) if _moving_helped(s, i + n) else None     # "help him *get* to the kitchen": the leading's
 
 
 def _goal_said_first(s: State, i: int) -> bool:
@@ -474,6 +497,15 @@ HELPING = Rule("help a person do", _helping, (
     Example("Help Jane find her keys", "Help Jane", Tag.POLITE),
     Example("help the guest to find a seat", "help the guest to", Tag.POLITE),
 ), frozenset(["help"]), "'help Jane find X': find X (the robot does what it helps with)")
+HELPED_MOVING_RULE = Rule("help a person move", _helped_moving, (
+    Example("help grandpa get to the garden", "help", Tag.VERB),
+    Example("help him go back to his room", "help", Tag.VERB),
+), frozenset(["help"]), "'help X get/go to Y': guide X to Y (the robot leads the person it helps move)")
+HELPED_MOVING_DROPPED = Rule("help a person move: the moving", _helped_moving_dropped, (
+    Example("help grandpa get to the garden", "get", ""),
+    Example("help the guest to go upstairs", "to go", ""),
+), frozenset(["to", *(f for lemma in HELPED_MOVING[1] for f in (lemma, "got", "went", "came"))]),
+    "the verb of moving after 'help X' read as guiding: dropped, the verb is the leading")
 EMPHATIC_DO = Rule("emphatic do", _emphatic_do, (
     Example("Do take his coat", "Do", Tag.POLITE),
 ), frozenset(["do"]), "'do' before a verb's base form")

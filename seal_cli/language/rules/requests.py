@@ -47,6 +47,7 @@ from seal_cli.language.english import (
     PRONOUNS,
     QUESTION_MEANS,
     QUESTION_WORDS,
+    RELATIVES,
     REQUEST_MEANS,
     REQUESTS,
     SEEN_ASKED,
@@ -1184,6 +1185,8 @@ def _wished_placed(s: State, i: int) -> Match | None:
           or s.verb_at(p) is not None and words[p - 1].lower not in NP_OPENERS]
     if len(at) != 1 or PREPOSITIONS.get(words[at[0]].lower) not in WISHED_PLACES or not s.np_starts(at[0] + 1):
         return None
+    if any(words[p].lower.split("'")[0] in RELATIVES for p in range(k + 1, at[0])):
+        return None             # "I want the juice *that's on* the shelf": where it is, no place it goes (words46)
     start, stop = words[i].start, words[k - 1].end
     return Match(n, (Word(s.text_of(start, stop), start, stop, Tag.VERB, PLACE_MEANS),), expect=False,
                  verb=PLACE_MEANS, using=False)
@@ -2670,7 +2673,9 @@ COUNT_TAIL_DROPPED = Rule("how many are there, after the phrase counted", _count
 FRONTED_UNMARKED = Rule("phrase said first, no comma", _fronted_unmarked, (
     Example("From the dresser take the hairbrush", "take", Tag.VERB),
     Example("In the kitchen how many people are standing?", "how many", Tag.VERB),
-), lambda low: low.isalpha(), "a phrase of place said before the verb with no comma: the clause starts at the verb",
+    Example("in the garage you'll find a ladder and bring it here", "you'll", Tag.POLITE),      # words46
+), lambda low: low.isalpha() or low in POLITE, "a phrase of place said before the verb with no comma: the clause "
+   "starts at the verb (or at politeness before it)",
    after=frozenset([Tag.WORD, Tag.NAME]))
 FRONTED_END = Rule("phrase said first", _fronted_end, (
     Example("From the cupboard, give me the bowl", ",", Tag.SEP),

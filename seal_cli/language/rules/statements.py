@@ -4,16 +4,67 @@ words of address and statements after the request ("..., dear, I'm cold"), a cla
 
 from __future__ import annotations
 
-from seal_cli.language.english import BECAUSE, FINITE, LET_KNOW, NP_OPENERS, SUBJECTS, WH_WORDS
+from seal_cli.language.english import (
+    BECAUSE,
+    END_MARKS,
+    FINITE,
+    FOUND_STATED,
+    LET_KNOW,
+    LOCATIVE,
+    NOMINATIVE,
+    NP_OPENERS,
+    PREPOSITIONS,
+    RELATIVES,
+    SUBJECTS,
+    WH_WORDS,
+)
 from seal_cli.language.morphology import verb_lemma
-from seal_cli.language.rule import Example, Match, Rule
-from seal_cli.language.state import CLOSED, State, subject_contracted, subject_word
+from seal_cli.language.rule import START, Example, Match, Rule
+from seal_cli.language.state import CLOSED, State, first_words, longest_phrase, merge, subject_contracted, subject_word
 from seal_cli.language.tags import Tag
-from seal_cli.language.tokens import capitalised
+from seal_cli.language.tokens import Word, capitalised
 
 
 def _aside(s: State, i: int) -> Match | None:
     return s.aside(i)
+
+
+def _found_stated(s: State, i: int) -> Match | None:
+    """"*You'll find Axel by the bookshelf,* lead him to the kitchen" (``FOUND_STATED``): at a sentence's start, the
+    words of coming upon, a phrase, a preposition of where it is and its phrase, then a comma and a command (no "then"
+    or "and": "you'll find Sam in the hall, then bring him a tea" is two steps) — a remark the command's pronoun
+    names, as "Axel is by the bookshelf, ..." is."""
+    words = s.words
+    if s.out and not (s.out[-1].tag == Tag.SEP and s.out[-1].lower in END_MARKS):
+        return None
+    j = _place_before_found(s, i)
+    n = longest_phrase(words, j, FOUND_STATED)
+    if not n or not s.np_starts(j + n):
+        return None
+    comma = next((k for k in range(j + n + 1, len(words)) if words[k].lower in (",", ";") or
+                  words[k].lower in END_MARKS or words[k].lower in ("and", "then")), len(words))
+    if comma + 1 >= len(words) or words[comma].lower not in (",", ";") or \
+            words[comma + 1].lower in ("and", "then") or not s.verb_after(comma + 1):
+        return None
+    if not (j > i or any(PREPOSITIONS.get(w.lower) in LOCATIVE for w in words[j + n + 1:comma])) or \
+            any(s.verb_at(k) is not None and words[k - 1].lower not in NP_OPENERS for k in range(j + n, comma)):
+        return None
+    return Match(comma + 1 - i, (merge(words, i, comma + 1 - i, Tag.POLITE),),
+                 remarks=((words[i].start, words[comma - 1].end),))
+
+
+def _place_before_found(s: State, i: int) -> int:
+    """Where the words of coming upon start after a phrase of place said first ("*in the bathroom* you'll find Morgan,
+    ..."), else ``i``: a preposition of where a thing is and a few words with no comma or verb."""
+    words = s.words
+    if PREPOSITIONS.get(words[i].lower) not in LOCATIVE or not s.np_starts(i + 1):
+        return i
+    for k in range(i + 2, min(len(words), i + 8)):
+        if longest_phrase(words, k, FOUND_STATED):
+            return k
+        if not words[k].lower.isalpha() or s.verb_at(k) is not None and words[k - 1].lower not in NP_OPENERS:
+            return i                              # "in the *shed*": a noun after its determiner
+    return i
 
 
 def _her_told(s: State, i: int) -> Match | None:
@@ -23,6 +74,50 @@ def _her_told(s: State, i: int) -> Match | None:
     if subject_word(s.words[i]) and s.told_at(i) or _bare_noun_is(s, i):
         return Match(0, last=out[-1].tagged(Tag.PRON))            # "tell *her* we're moving": her is the person told
     return None
+
+
+_ASKED_THINGS = frozenset(["question", "questions", "quiz", "riddle", "riddles", "query", "queries", "whatever"])
+"""What a person asks, as a verb of saying's object ("answer *whatever* she asks you", "answer the *question* the man
+asks")."""
+_ASKING = frozenset(["ask", "asks", "asked", "has", "have", "poses", "pose", "posed"])
+_ASKED_OF = frozenset(["you", "me", "us"])
+
+
+def _asking_end(s: State, i: int) -> int:
+    """Where "asks (you)" ends the clause after its subject at ``i`` ("whatever *the man by the door* asks you"; 0:
+    none): a form of asking, maybe the one asked, then the clause's end; a subject of a few words before it."""
+    words = s.words
+    end = s.clause_end(i + 1)
+    for k in range(i + 1, min(end, i + 10)):
+        if words[k].lower in _ASKING:
+            n = 1 + (k + 1 < end and words[k + 1].lower in _ASKED_OF)
+            return k + n if k + n == end else 0
+    return 0
+
+
+def _question_asker(s: State, i: int) -> Match | None:
+    """"answer *whatever* the person raising their arm asks you", "answer the question *she asks*": what a person asks
+    is their question, as "the question *of* the person ..." is — an unsaid "of" before the asker (whose question,
+    the recipient); "asks you" is dropped by :data:`ASKING_DROPPED` (words46: "she asks you" was what is said, the
+    question the person answered, and "whatever the person ... asks you" was refused)."""
+    words = s.words
+    if not s.speech or s.prev_tag() != Tag.WORD or s.out[-1].lower not in _ASKED_THINGS:
+        return None
+    relative = words[i].lower in RELATIVES
+    k = i + relative
+    if k >= len(words) or not (words[k].lower in NOMINATIVE or words[k].lower in NP_OPENERS or
+                               capitalised(words[k])) or not _asking_end(s, k):
+        return None
+    at = words[k].start
+    return Match(int(relative), (Word("", at, at, Tag.OF, None, "of"),))
+
+
+def _asking_dropped(s: State, i: int) -> Match | None:
+    words = s.words
+    if s.verb_index < 0 or not any(w.text == "" and w.tag == Tag.OF for w in s.out[s.verb_index + 1:-1]):
+        return None
+    n = 1 + (i + 1 < len(words) and words[i + 1].lower in _ASKED_OF)
+    return Match(n) if s.clause_end(i + 1) == i + n else None
 
 
 def _bare_noun_is(s: State, i: int) -> bool:
@@ -92,6 +187,21 @@ ASIDE = Rule("sentence beside the command", _aside, (
     Example("on the sofa there's a blanket, bring it to me", "on the sofa there's a blanket,", Tag.POLITE),
     Example("in the hall you will find a box, bring it to me", "in the hall you will find a box,", Tag.POLITE),
 ), None, "a greeting, a statement with no verb of the library, or 'see X?', where a command should start")
+QUESTION_ASKER = Rule("whose question, asked", _question_asker, (
+    Example("answer whatever the man at the door asks you", "", Tag.OF),
+    Example("answer the question she asks", "", Tag.OF),
+), None, "'answer whatever X asks (you)': X's question, as 'the question of X'", after=frozenset([Tag.WORD]))
+ASKING_DROPPED = Rule("whose question, asked: the asking", _asking_dropped, (
+    Example("answer whatever the man at the door asks you", "asks you", ""),
+), _ASKING, "the 'asks you' after the asker of 'answer whatever X asks you': dropped, X is whose question it is")
+FOUND_STATED_RULE = Rule("where you will find it", _found_stated, (
+    Example("you'll find Noor by the piano, take her to the garden", "you'll find Noor by the piano,", Tag.POLITE),
+    Example("you will find the keys in the drawer, bring them to me", "you will find the keys in the drawer,",
+            Tag.POLITE),
+    Example("in the shed you'll find a rake, bring it to me", "in the shed you'll find a rake,", Tag.POLITE),
+), first_words(FOUND_STATED) | frozenset(p for p, canonical in PREPOSITIONS.items() if canonical in LOCATIVE),
+    "'you'll find X in Y, V it': where X is, a remark the command's pronoun names",
+    after=frozenset([START, Tag.SEP]))
 HER_TOLD = Rule("her told", _her_told, (
     Example("tell her we're moving", "her", Tag.PRON),
     Example("tell her dinner's ready", "her", Tag.PRON),
