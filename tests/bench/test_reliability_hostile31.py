@@ -1,0 +1,30 @@
+"""Round hostile31's hostile cases of ``seal bench reliability``: new, named once, each saying what its message names,
+part of the attacker's; each leftover and a pick of the later batches end cleanly (each failed on main before this
+round)."""
+
+from __future__ import annotations
+
+from pathlib import Path
+
+import pytest
+
+from seal_cli.bench.reliability import run_case
+from seal_cli.bench.reliability_attacker import attacker_cases
+from seal_cli.bench.reliability_hostile31 import hostile31_cases, hostile31_leftover_cases
+
+
+def test_the_hostile31_cases_are_named_once_and_say_what_they_must() -> None:
+    found = [*hostile31_leftover_cases(), *hostile31_cases()]
+    assert len({c.name for c in found}) == len(found)
+    assert all(c.says for c in found if c.codes in ((0,), (1,)))
+    assert {c.name for c in found} <= {c.name for c in attacker_cases()}
+
+
+@pytest.mark.parametrize("name", [c.name for c in hostile31_leftover_cases()])
+def test_a_control_character_anywhere_in_a_frame_file_is_refused_at_it(name: str,
+                                                                         monkeypatch: pytest.MonkeyPatch) -> None:
+    """A NUL, an escape, a backspace or a DEL in a comment was read with the comment; in a name it was "the frame is
+    not closed" and its line was printed with the character as it is. This tree's code."""
+    monkeypatch.setenv("PYTHONPATH", str(Path(__file__).resolve().parents[2]))
+    case = next(c for c in hostile31_leftover_cases() if c.name == name)
+    assert run_case(case).problems == []
