@@ -28,3 +28,21 @@ def test_a_control_character_anywhere_in_a_frame_file_is_refused_at_it(name: str
     monkeypatch.setenv("PYTHONPATH", str(Path(__file__).resolve().parents[2]))
     case = next(c for c in hostile31_leftover_cases() if c.name == name)
     assert run_case(case).problems == []
+
+
+@pytest.mark.parametrize("name", [
+    "A bench tasks --suite context --fov 1e-300",
+    "A run on a map whose sensor sees 0.001 degrees",
+    "A run --rrd whose name ends in /",
+    "A localize --observations of a file named with a / after it",
+    "A localize --goals of '-'",
+    "A validate of a ROS map whose image is a link loop",
+    "A run --map of a missing map whose name holds a carriage return",
+])
+def test_picked_hostile31_cases_end_cleanly(name: str, monkeypatch: pytest.MonkeyPatch) -> None:
+    """Each failed before this round: a sliver of a field of view ran without end, a name ending in '/' wrote or read
+    the file without it, ``--goals -`` made a folder called "-", a loop of links "does not exist", a carriage return
+    in a name reached the terminal. This tree's code."""
+    monkeypatch.setenv("PYTHONPATH", str(Path(__file__).resolve().parents[2]))
+    case = next(c for c in hostile31_cases() if c.name == name)
+    assert run_case(case).problems == []
