@@ -42,6 +42,7 @@ def hostile31_leftover_cases() -> Iterator[Case]:
 def hostile31_cases() -> Iterator[Case]:
     """Round hostile31's later batches."""
     yield from _sensor_and_name_cases()
+    yield from _labels_verbs_and_numbers_cases()
 
 
 def _sensor_and_name_cases() -> Iterator[Case]:  # noqa: PLR0915 - one list of cases, read top to bottom
@@ -152,3 +153,85 @@ def _sensor_and_name_cases() -> Iterator[Case]:  # noqa: PLR0915 - one list of c
     yield Case("A parse --file whose line holds an escape sequence", ("parse", "--file", "c.txt"),
                (("c.txt", b"go to the kitchen\n\x1b[2Jopen the fridge\n"),), codes=(0, 1), keep=("c.txt",),
                says=r"2|U\+001B", unsaid=RAW)
+
+
+def _labels_verbs_and_numbers_cases() -> Iterator[Case]:  # noqa: PLR0915 - one list of cases, read top to bottom
+    """Round hostile31's third batch: a bag's labels file whose label is a number or holds a control character (passed
+    on as a class, into the observations written); a bag of only its magic bytes (Python's own words, "ord()
+    expected a character"); a verb a frame library adds that English reads as a noun too, said alone ("unknown verb
+    'zap' ... the robot can ... or zap"); an end-to-end suite whose case holds a number where a class goes (scored
+    as a plan missed, not said at its line); numbers at the edges of what options take (seeds past 2**64, a clock of
+    fullwidth digits or with a time zone, a time that is none)."""
+    from seal_cli.bench.reliability_attacker import _sample_bag
+
+    # -- end-to-end suites --------------------------------------------------------------------------------------------
+    def suite(name: str, case: bytes, codes: tuple[int, ...], says: str) -> Case:
+        return Case(f"A bench e2e --file whose case {name}", ("bench", "e2e", "--file", "e.yaml", "--jobs", "1",
+                                                                "--particles", "20"),
+                    (("e.yaml", b"cases:\n  - {map: studio, text: \"go to the sofa\", plan: [\"Go(goal=sofa_1)\"]" + case
+                      + b"}\n"),), codes=codes, keep=("e.yaml",), says=says, timeout=120)
+    yield suite("holds a number where the robot's hand's class goes", b", holding: 5", (1,),
+                r"e\.yaml:2:\d+: .*holding '5' is not a class name")
+    yield suite("holds a class of punctuation in the robot's hand", b", holding: '!!'", (1,),
+                r"e\.yaml:2:\d+: .*holding")
+    yield suite("holds a class with an escape sequence in the robot's hand", b', holding: "cu\\e[2Jp"', (1,),
+                r"e\.yaml:2:\d+: .*holding")
+    yield suite("holds a well-formed class in the robot's hand", b", holding: cup, run: done", (0, 1), r"sofa")
+    # -- a verb a library adds that English reads as a noun too ------------------------------------------------------
+    zap = b'frame Zap "zap" {\n  theme: object\n  do navigate(theme)\n}\n'
+    for said in ("zap", "zap now", "Zap!"):
+        yield Case(f"A parse of '{said}' with a library that adds the verb zap", ("parse", said, "--framelib",
+                                                                                 "+z.frame"),
+                   (("z.frame", zap),), codes=(1,), keep=("z.frame",), says=r"'zap' is read here as a thing",
+                   unsaid=r"unknown verb 'zap'")
+    yield Case("A plan of 'zap the cup' with a library that adds the verb zap",
+               ("plan", "zap the cup", "--framelib", "+z.frame", "--map", "apartment"), (("z.frame", zap),),
+               codes=(0,), keep=("z.frame",), says=r"Zap")
+    yield Case("A parse of 'blorf' with a library that adds the verb blorf",
+               ("parse", "blorf", "--framelib", "+z.frame"), (("z.frame", zap.replace(b'"zap"', b'"blorf"')),),
+               codes=(0,), keep=("z.frame",), says=r"(?s).")
+    # -- numbers at the edges of options --------------------------------------------------------------------------------
+    sofa = ("run", "go to the sofa", "--map", "studio", "--particles", "20")
+    yield Case("A run --seed past 2**64", (*sofa, "--seed", str(2**64 + 1)), codes=(0,), says=r"done: Go")
+    yield Case("A run --seed of 200 digits", (*sofa, "--seed", "9" * 200), codes=(0, 1, 2), says=r"seed|done: Go")
+    yield Case("A run --seed of -1", (*sofa, "--seed", "-1"), codes=(2,), says=r"--seed")
+    yield Case("A run --clock of fullwidth digits", (*sofa, "--clock", "\uff11\uff12:\uff10\uff10"), codes=(0, 1),
+               says=r"--clock|done: Go")
+    yield Case("A run --clock of 24:00", (*sofa, "--clock", "24:00"), codes=(1,), says=r"--clock: '24:00' is no time")
+    yield Case("A run --clock of February 30th", (*sofa, "--clock", "2026-02-30T10:00"), codes=(1,),
+               says=r"--clock: '2026-02-30T10:00' is no time")
+    yield Case("A run --clock with an escape sequence", (*sofa, "--clock", "12:00\x1b[2J"), codes=(1,),
+               says=r"--clock: '12:00\\x1b\[2J' is no time", unsaid=RAW)
+    yield Case("A bench tasks --seed past 2**64", ("bench", "tasks", "--suite", "map", "--map", "studio", "--command",
+                                                  "go to the sofa", "--layouts", "1", "--policies", "oracle",
+                                                  "--particles", "20", "--jobs", "1", "--seed", str(2**64 + 1)),
+               codes=(0,), says=r"(?s).", timeout=120)
+    yield Case("A localize --seed of 2**128 + 1", ("localize", "--map", "apartment", "--task", "go to the kitchen",
+                                                   "--steps", "1", "--particles", "20", "--seed", str(2**128 + 1)),
+               codes=(0,), says=r"(?s).")
+    yield Case("A bench maps --points 0", ("bench", "maps", "--points", "0"), codes=(2,), says=r"--points")
+    yield Case("A run --search-end of nan", (*sofa, "--search-end", "nan"), codes=(1, 2), says=r"--search-end")
+    yield Case("A run --max-metres of -inf", (*sofa, "--max-metres", "-inf"), codes=(1, 2), says=r"--max-metres")
+    # -- a bag's labels and a bag of its magic alone ------------------------------------------------------------------
+    bag = _sample_bag()
+    if bag is None:
+        return
+    def labelled(name: str, labels: bytes, says: str) -> Case:
+        return Case(f"A import-bag --labels whose {name}", ("import-bag", "run.mcap", "-o", "o.yaml", "--labels",
+                                                            "l.yaml"),
+                    (("run.mcap", bag), ("l.yaml", labels)), codes=(1,), keep=("run.mcap", "l.yaml"),
+                    absent=("o.yaml",), says=says, unsaid=RAW)
+    yield labelled("label is a number", b"cup: 1\n", r"l\.yaml:1:6: .*label of cup")
+    yield labelled("label in a list is a number", b"[background, 7]\n", r"l\.yaml:1:\d+: .*label 1")
+    yield labelled("label holds an escape sequence", b'1: "cu\\e[2Jp"\n', r"l\.yaml:1:4: .*label of 1")
+    yield labelled("label holds a NUL", b'1: "cu\\0p"\n', r"l\.yaml:1:4: .*label of 1")
+    yield Case("A localize --bag --labels whose label is a number",
+               ("localize", "--map", "apartment", "--task", "go to the kitchen", "--particles", "20", "--bag",
+                "run.mcap", "--labels", "l.yaml"), (("run.mcap", bag), ("l.yaml", b"[background, 7]\n")), codes=(1,),
+               keep=("run.mcap", "l.yaml"), says=r"l\.yaml:1:\d+: .*label 1")
+    yield Case("A import-bag of an .mcap of its magic alone", ("import-bag", "h.mcap", "-o", "o.yaml"),
+               (("h.mcap", bag[:8]),), codes=(1,), keep=("h.mcap",), absent=("o.yaml",),
+               says=r"h\.mcap: .*(cut short|ends)", unsaid=r"ord\(\)")
+    yield Case("A import-bag of an .mcap of its magic and a byte", ("import-bag", "h.mcap", "-o", "o.yaml"),
+               (("h.mcap", bag[:9]),), codes=(1,), keep=("h.mcap",), absent=("o.yaml",),
+               says=r"h\.mcap: ", unsaid=r"ord\(\)")
