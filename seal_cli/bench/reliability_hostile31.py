@@ -166,10 +166,10 @@ def _labels_verbs_and_numbers_cases() -> Iterator[Case]:  # noqa: PLR0915 - one 
 
     # -- end-to-end suites --------------------------------------------------------------------------------------------
     def suite(name: str, case: bytes, codes: tuple[int, ...], says: str) -> Case:
+        head = b'cases:\n  - {map: studio, text: "go to the sofa", plan: ["Go(goal=sofa_1)"]'
         return Case(f"A bench e2e --file whose case {name}", ("bench", "e2e", "--file", "e.yaml", "--jobs", "1",
                                                                 "--particles", "20"),
-                    (("e.yaml", b"cases:\n  - {map: studio, text: \"go to the sofa\", plan: [\"Go(goal=sofa_1)\"]" + case
-                      + b"}\n"),), codes=codes, keep=("e.yaml",), says=says, timeout=120)
+                    (("e.yaml", head + case + b"}\n"),), codes=codes, keep=("e.yaml",), says=says, timeout=120)
     yield suite("holds a number where the robot's hand's class goes", b", holding: 5", (1,),
                 r"e\.yaml:2:\d+: .*holding '5' is not a class name")
     yield suite("holds a class of punctuation in the robot's hand", b", holding: '!!'", (1,),
@@ -190,7 +190,7 @@ def _labels_verbs_and_numbers_cases() -> Iterator[Case]:  # noqa: PLR0915 - one 
     yield Case("A parse of 'blorf' with a library that adds the verb blorf",
                ("parse", "blorf", "--framelib", "+z.frame"), (("z.frame", zap.replace(b'"zap"', b'"blorf"')),),
                codes=(0,), keep=("z.frame",), says=r"(?s).")
-    # -- numbers at the edges of options --------------------------------------------------------------------------------
+    # -- numbers at the edges of options -------------------------------------------------------------------------
     sofa = ("run", "go to the sofa", "--map", "studio", "--particles", "20")
     yield Case("A run --seed past 2**64", (*sofa, "--seed", str(2**64 + 1)), codes=(0,), says=r"done: Go")
     yield Case("A run --seed of 200 digits", (*sofa, "--seed", "9" * 200), codes=(0, 1, 2), says=r"seed|done: Go")
