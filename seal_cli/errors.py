@@ -11,10 +11,11 @@ A check that finds several problems at once (``seal validate``) raises or return
 
 from __future__ import annotations
 
+import re
 from collections.abc import Iterable, Sequence
 from dataclasses import dataclass
 
-__all__ = ["SealError", "SealErrors", "Where", "at_line", "at_words", "caret", "readable"]
+__all__ = ["CONTROL", "SealError", "SealErrors", "Where", "at_line", "at_words", "caret", "escaped", "readable"]
 
 
 @dataclass(frozen=True, order=True)
@@ -45,17 +46,27 @@ EXCERPT = 100
 is cut to this many around the column, with "…" where it was cut."""
 
 
+CONTROL = re.compile(r"[\x00-\x08\x0b-\x1f\x7f-\x9f]")
+"""Control characters but a line break and a tab: printed as they are, a NUL, an escape sequence (``\\x1b[2J``) or a
+carriage return acts on the terminal instead of being shown."""
+
+
+def escaped(text: str) -> str:
+    """``text`` with each control character (:data:`CONTROL`) written as its escape, ``\\x00``, ``\\x1b``."""
+    return CONTROL.sub(lambda m: m[0].encode("unicode_escape").decode("ascii"), text)
+
+
 def caret(source_line: str, column: int) -> str:
-    """The source line (cut to :data:`EXCERPT` characters around the column) with a caret under the
-    1-based column."""
+    """The source line (cut to :data:`EXCERPT` characters around the column, its control characters
+    :func:`escaped`) with a caret under the 1-based column."""
     line = source_line.rstrip("\n")
     before = max(column - 1, 0)
     if len(line) > EXCERPT:
         start = max(0, min(before - EXCERPT // 2, len(line) - EXCERPT))
         head, tail = ("…" if start else ""), ("…" if start + EXCERPT < len(line) else "")
         line, before = head + line[start:start + EXCERPT] + tail, before - start + len(head)
-    pad = "".join("\t" if ch == "\t" else " " for ch in line[:before])
-    return f"{line}\n{pad}^"
+    pad = "".join("\t" if ch == "\t" else " " * len(escaped(ch)) for ch in line[:before])
+    return f"{escaped(line)}\n{pad}^"
 
 
 WORD = 200
@@ -67,14 +78,14 @@ MESSAGE = 3000
 
 def readable(message: str) -> str:
     """``message`` with each word longer than :data:`WORD` characters, and the whole past :data:`MESSAGE`, cut
-    with "…" (what is printed; the JSON of an error keeps the message whole)."""
-    import re
+    with "…", its control characters :func:`escaped` (what is printed; the JSON of an error keeps the message
+    whole)."""
 
     def cut(word: str) -> str:  # the punctuation that ends a long word stays: "xxx…: File name too long"
         end = min(len(word) - len(word.rstrip(":;,.)]}'\"")), 3)
         return word[:WORD - 1 - end] + "…" + word[len(word) - end:]
 
-    message = re.sub(rf"\S{{{WORD + 1},}}", lambda m: cut(m.group()), message)
+    message = re.sub(rf"\S{{{WORD + 1},}}", lambda m: cut(m.group()), escaped(message))
     return message if len(message) <= MESSAGE else message[:MESSAGE - 1] + "…"
 
 
@@ -105,7 +116,7 @@ class SealError(Exception):
         """``file:line:col: message`` (the part a tool or an editor reads); the message :func:`readable`."""
         if self.where == Where():
             return readable(self.message)
-        return f"{self.where}: {readable(self.message)}"
+        return f"{escaped(str(self.where))}: {readable(self.message)}"
 
     def __str__(self) -> str:
         text = self.located()

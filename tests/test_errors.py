@@ -23,6 +23,15 @@ def test_the_caret_keeps_tabs_so_it_lines_up() -> None:
     assert caret("\tab c", 4) == "\tab c\n\t  ^"
 
 
+def test_control_characters_are_shown_escaped_and_the_caret_still_lines_up() -> None:
+    """A NUL, an escape sequence or a carriage return in a source line, a message or a file name acted on the terminal
+    (hostile31); the JSON of the error keeps them as they are."""
+    assert caret("a\x00b\x1b[2Jc", 3) == "a\\x00b\\x1b[2Jc\n     ^"
+    error = SealError("name 'x\ry' is odd", Where("f\x1b.yaml", 1, 2))
+    assert str(error) == "f\\x1b.yaml:1:2: name 'x\\ry' is odd" and error.to_json()["message"] == "name 'x\ry' is odd"
+    assert str(SealError("two\n\tlines")) == "two\n\tlines"
+
+
 def test_several_errors_are_sorted_by_file_line_and_column() -> None:
     errors = SealErrors([SealError("c", Where("b", 1, 1)), SealError("b", Where("a", 2, 1)),
                          SealError("a", Where("a", 1, 9))])

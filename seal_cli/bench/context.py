@@ -191,11 +191,14 @@ def house_set(name: str, data: Path) -> list[House]:
 
 
 def with_fov(built: Sequence[House], fov: float | None) -> list[House]:
-    """The houses with every map's sensor seeing ``fov`` degrees (None: as drawn); refused outside (0, 360]."""
+    """The houses with every map's sensor seeing ``fov`` degrees (None: as drawn); refused outside
+    :data:`~seal_cli.maps.model.FOV_RANGE`."""
+    from seal_cli.maps.model import FOV_RANGE, fov_ok
+
     if fov is None:
         return list(built)
-    if not 0 < fov <= 360:
-        raise SealError(f"--fov {fov:g}: degrees in (0, 360]")
+    if not fov_ok(fov):
+        raise SealError(f"--fov {fov:g}: {FOV_RANGE}")
     return [dataclasses.replace(h, map=dataclasses.replace(h.map, sensor=dataclasses.replace(h.map.sensor,
                                                                                            fov_deg=float(fov))))
             for h in built]

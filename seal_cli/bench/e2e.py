@@ -111,6 +111,7 @@ def _load(path: Path) -> list[Case]:
 
     from seal_cli.errors import SealErrors
     from seal_cli.fileio import compose_yaml, read_text
+    from seal_cli.frames.taxonomy import check_class_name
     from seal_cli.yamlnodes import NodeReader
 
     text = read_text(path)
@@ -137,6 +138,11 @@ def _load(path: Path) -> list[Case]:
                                                 for item in reader.items(value, f"case {number}'s {key}")) if v)
             else:
                 values[key] = reader.string(value, f"case {number}'s {key}")
+        if values.get("holding") is not None:  # a number there was a plan missed, not a problem of the file (hostile31)
+            try:
+                check_class_name(values["holding"], f"case {number}'s holding")
+            except SealError as error:
+                reader.problem(error.message, fields["holding"][1])
         missing = [k for k in ("text", "map") if k not in fields]
         if missing:
             reader.problem(f"case {number} has no {' and no '.join(missing)} (its map: one of {', '.join(MAPS)}, a "

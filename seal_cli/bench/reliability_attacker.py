@@ -307,6 +307,10 @@ def attacker_cases() -> Iterator[Case]:  # noqa: PLR0915 - one list of cases, re
     yield from hostile30_leftover_cases()
     yield from hostile30_cases()
     yield from hostile30_output_cases()
+    from seal_cli.bench.reliability_hostile31 import hostile31_cases, hostile31_leftover_cases
+
+    yield from hostile31_leftover_cases()
+    yield from hostile31_cases()
 
 
 def hostile14_cases() -> Iterator[Case]:

@@ -73,6 +73,7 @@ def command(*args: Any, on: typer.Typer | None = None, **kwargs: Any) -> Callabl
         def run(*a: Any, **kw: Any) -> None:
             def checked() -> int | None:
                 _refuse_empty_values(kw)
+                _refuse_folder_names_of_files(kw)
                 return function(*a, **_composed_commands(kw))
 
             code = run_command(checked)
@@ -178,6 +179,55 @@ def _refuse_empty_values(values: dict[str, Any]) -> None:
                     else ": give a file or folder name" if any(isinstance(v, Path) for v in items)
                     else f": give a value{takes}{out}")
             raise SealError(f"{typed} is empty{said}")
+
+
+def _refuse_folder_names_of_files(values: dict[str, Any]) -> None:
+    """Refuse a file's name given with a ``/`` after it (``--rrd o.rrd/``, ``--observations o.yaml/``, ``validate
+    m.yaml/``), naming the option as typed. Such a name is a folder's (``cat o.yaml/`` says "Not a directory"), but
+    typer makes it a ``Path``, which drops the ``/``: the output was written as the file ``o.rrd``, the input read as
+    the file (hostile31). A name of an existing folder (``--framelib lib/``, ``--pddl out/``) or of no file and no
+    suffix (``--goals bag/``, a ROS 2 bag's folder to make) is a folder's, as it says."""
+    import sys
+
+    from seal_cli.errors import SealError
+    from seal_cli.fileio import shown_path
+
+    argv = sys.argv[1:]
+    options = {p.name: p for p in _options()}
+    for name, value in values.items():
+        items = value if isinstance(value, list | tuple) else [value]
+        option = options.get(name)
+        for item in items:
+            a_map = isinstance(item, str) and option is not None and "--map" in option.opts
+            if not (isinstance(item, Path) or a_map):
+                continue
+            raw = _typed_with_slash(str(item), option.opts if option is not None else (), argv)
+            if raw is None:
+                continue
+            target = Path(raw.lstrip("+") if option is not None and "--framelib" in option.opts else raw)
+            if target.is_dir() or not (target.exists() or target.is_symlink() or target.suffix):
+                continue
+            said = f"{max(option.opts, key=len)} {shown_path(raw)}" if option is not None else shown_path(raw)
+            what = f"{shown_path(target)} is a file" if target.exists() else f"there is no folder {shown_path(target)}"
+            raise SealError(f"{said}: a name ending in '/' is a folder's, and {what}: give the file's name without the "
+                            "'/'")
+
+
+def _typed_with_slash(value: str, opts: tuple[str, ...] | list[str], argv: list[str]) -> str | None:
+    """How ``value`` (a path typer made, its trailing ``/`` dropped) was typed in ``argv``, if it was typed with a
+    ``/`` (or ``/.``) after it: after one of ``opts`` (``--png x/``, ``--png=x/``), or anywhere for an argument."""
+    for k, typed in enumerate(argv):
+        for opt in opts:
+            if typed.startswith(f"{opt}="):
+                typed = typed[len(opt) + 1:]
+                break
+        else:
+            if opts and not (k and argv[k - 1] in opts):
+                continue
+        if typed.rstrip("/").removesuffix("/.").rstrip("/") != typed and Path(typed) == Path(value) \
+                and typed not in ("/", "+/"):
+            return typed
+    return None
 
 
 FramelibOption = typer.Option(None, "--framelib", help="Frame library file or folder (repeatable); "

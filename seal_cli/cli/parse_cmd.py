@@ -12,7 +12,7 @@ from typing import TYPE_CHECKING, Any
 import typer
 
 from seal_cli.cli import FramelibOption, JsonOption, bench_app, command, emit_json, err, framelib_paths, out
-from seal_cli.cli.output import dump_json
+from seal_cli.cli.output import dump_json, plain
 from seal_cli.cli.parse_view import _escape, print_parse, summary
 from seal_cli.errors import SealError, Where
 
@@ -170,6 +170,7 @@ def _score(corpora: list[Path], folder: Path, constants: Path, work: Path, libra
     the corpora and constants (:mod:`seal_cli.bench.corpora`), never the user's files."""
     from seal_cli.bench.corpora import Corpus, read_corpus, write_plain
     from seal_cli.bench.parsing import commands_of, measure
+    from seal_cli.fileio import shown_path
     from seal_cli.language.grounding import Vocabulary
 
     seal = f"{sys.executable} -m seal_cli"
@@ -225,10 +226,10 @@ def _score(corpora: list[Path], folder: Path, constants: Path, work: Path, libra
                 raise SealError(f"the scorer failed on {path}: {run.stderr[-500:]}") from None
             results[str(path)]["in_process"] = figures.to_json()
         else:
-            out.print(f"[bold]{_escape(str(path))}[/bold]")
-            out.print(_escape(run.stdout.rstrip()))
+            out.print(f"[bold]{plain(shown_path(path))}[/bold]")
+            out.print(plain(run.stdout.rstrip()))  # the scorer prints each command as it is: an escape sequence too
             if run.returncode and run.stderr:
-                err.print(_escape(run.stderr.rstrip()[-1000:]))
+                err.print(plain(run.stderr.rstrip()[-1000:]))
             out.print(f"in process: {figures.commands_per_cpu_s:,.0f} commands/CPU-s; clauses swallowed into an "
                       f"element: {figures.silent_swallowed} silently, {figures.refused_swallowed} refused; states "
                       f"dropped: {figures.silent_dropped}; phrases no element takes: {figures.silent_unplaced} "

@@ -258,7 +258,7 @@ def tasks(
                                       "many starts per house drawn with --seed from its rooms' free space "
                                       "(default: each house's own three).", show_default=False),
     fov: float | None = typer.Option(None, "--fov", help="With --suite context or context_all: every house's "
-                                     "sensor sees this many degrees, in (0, 360] (default: each house's own, 360).",
+                                     "sensor sees this many degrees, in [1, 360] (default: each house's own, 360).",
                                      show_default=False),
     policies: str = typer.Option(",".join(DEFAULT_POLICIES), "--policies",
                                  help="Comma-separated policies, of: " + ", ".join(POLICIES) + "."),
@@ -281,6 +281,7 @@ def tasks(
 
     from seal_cli.bench.tasks import Outcome, run_suite, summarise
     from seal_cli.errors import SealError
+    from seal_cli.maps.model import FOV_RANGE, fov_ok
 
     if suite not in SUITES:
         raise SealError(f"unknown suite {suite!r}; the suites are {', '.join(SUITES)}")
@@ -291,8 +292,8 @@ def tasks(
     if backend not in ("process", "ray") or (backend == "ray" and suite != "alfred2d"):
         raise SealError(f"--backend {backend!r}: process, or ray with --suite alfred2d")
     _unread_options(suite, given)
-    if fov is not None and not 0 < fov <= 360:      # NaN too
-        raise SealError(f"--fov {fov:g}: degrees in (0, 360]")
+    if fov is not None and not fov_ok(fov):      # NaN too
+        raise SealError(f"--fov {fov:g}: {FOV_RANGE}")
     if suite == "context_all":
         from seal_cli.bench.context import HOUSE_SETS
 

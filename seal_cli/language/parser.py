@@ -345,6 +345,9 @@ def _unknown_verb(lexicon: Lexicon, word: str) -> str:
     none of them)."""
     import difflib
 
+    if word in lexicon.verbs:  # a library's verb English reads as a noun too ("zap"): "unknown verb 'zap' ... or zap"
+        return (f"{word!r} is read here as a thing, not as the library's verb {word!r}: say what to {word} "
+                f"('{word} the ...', '{word} it')")
     english = in_verb_tables(word) and word not in CLOSED                   # "this", "it": no verbs here
     close = [] if english else difflib.get_close_matches(word, lexicon.verbs, n=3, cutoff=0.75)
     if close or not lexicon.can:                 # "make" is a verb of English, no misspelt "take"

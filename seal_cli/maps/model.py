@@ -56,8 +56,8 @@ from seal_cli.names import check_name_length, check_sayable
 if TYPE_CHECKING:
     from seal_cli.maps.priors import Prior
 
-__all__ = ["OUTSIDE", "SPEAKER", "Map", "MapWarning", "ObjectTruth", "Person", "Place", "Robot", "Room", "Sensor",
-           "prior_density", "prior_sampler", "sample_prior"]
+__all__ = ["FOV_RANGE", "MIN_FOV", "OUTSIDE", "SPEAKER", "Map", "MapWarning", "ObjectTruth", "Person", "Place", "Robot",
+           "Room", "Sensor", "fov_ok", "prior_density", "prior_sampler", "sample_prior"]
 
 SPEAKER = "me"
 """The name the person who gives the command goes by ("me", "I", "us")."""
@@ -321,6 +321,20 @@ class Robot:
         return (self.pose[0], self.pose[1])
 
 
+MIN_FOV = 1.0
+"""The narrowest field of view a sensor may have, in degrees. A robot that does not see all round looks round by
+turning 360 / fov times on the spot (``sim.agent.Agent.look_round``): ``fov: 0.001`` was 360,000 looks at every
+stop, and ``seal run`` did not end (hostile31); at 1° it is 360, as narrow as a camera is."""
+
+FOV_RANGE = f"degrees in [{MIN_FOV:g}, 360]"
+"""How a message says the field of view a sensor may have."""
+
+
+def fov_ok(value: float) -> bool:
+    """Whether ``value`` is a field of view a sensor may have (:data:`MIN_FOV` to 360 degrees; NaN is not)."""
+    return MIN_FOV <= value <= 360
+
+
 @dataclass(frozen=True)
 class Sensor:
     """What the robot perceives.
@@ -341,7 +355,7 @@ class Sensor:
 
     def __post_init__(self) -> None:
         checks = (("range", self.range, lambda v: v > 0, "a positive number of metres"),
-                  ("fov", self.fov_deg, lambda v: 0 < v <= 360, "degrees in (0, 360]"),
+                  ("fov", self.fov_deg, fov_ok, FOV_RANGE),
                   ("p_detect", self.p_detect, lambda v: 0 <= v <= 1, "a probability in [0, 1]"),
                   ("sigma", self.sigma, lambda v: v > 0, "a positive number of metres"),
                   ("noise", self.noise, lambda v: v >= 0, "a number of metres, 0 or more"))

@@ -85,6 +85,8 @@ def check_goals_path(path: str | Path, inputs: Sequence[str | Path | None] = ())
     a device is refused too (hostile27: ``--goals /dev/full`` ran the whole filter, then said "Not a directory")."""
     target = Path(path)
     shown = shown_path(target)
+    if str(path) == "-":    # as every other output refuses it (fileio.Outputs): it made a bag folder called "-"
+        raise SealError("--goals '-': seal writes this output into a file, not to standard output; give a file name")
     for given in inputs:
         if given is not None and (os.path.realpath(given) == os.path.realpath(target) or _same_file(given, target)):
             raise SealError(f"--goals {shown} is an input or another output of the run ({shown_path(given)}): give "

@@ -83,6 +83,10 @@ def damage(exc: BaseException) -> str:
     """What a reader's failure says, or, when it says nothing a person can use (a damaged index makes rosbags
     fail an ``assert`` or look up a connection id that is no key: ``''``, ``'60673'``), that the bag is damaged."""
     said = " ".join(str(a) for a in getattr(exc, "args", ())).strip()
+    if isinstance(exc, EOFError) or isinstance(exc, TypeError) and "length 0" in said:
+        # an MCAP of its magic alone: rosbags read a record's opcode past the end, "ord() expected a character, but
+        # string of length 0 found" (hostile31)
+        return "the bag is cut short: it ends where a record should begin (was it copied or recorded whole?)"
     if isinstance(exc, (AssertionError, KeyError, IndexError, MemoryError)) or not said:
         return (f"the bag is damaged: a record or its index does not hold what its header says "
                 f"({type(exc).__name__}{': ' + said if said else ''}); a ROS 1 bag's index can be rebuilt with 'rosbag "

@@ -194,9 +194,9 @@ def test_bench_tasks_context_fov_gives_every_house_that_sensor_and_refuses_a_sen
     narrow = with_fov([House(cottage(), COTTAGE_STARTS)], 90.0)
     assert narrow[0].map.sensor.fov_deg == 90.0 and narrow[0].map.sensor.range == cottage().sensor.range
     assert narrow[0].starts == COTTAGE_STARTS and with_fov(narrow, None) == narrow
-    for bad in ("0", "-90", "361", "nan"):
+    for bad in ("0", "-90", "361", "nan", "0.5", "1e-300"):  # a sliver was 360 / fov looks at each stop (hostile31)
         out = runner.invoke(app, ["bench", "tasks", "--suite", "context", "--fov", bad, "--data", str(shared_data)])
-        assert out.exit_code == 1 and "degrees in (0, 360]" in out.stderr and "Traceback" not in out.output, bad
+        assert out.exit_code == 1 and "degrees in [1, 360]" in out.stderr and "Traceback" not in out.output, bad
     off = runner.invoke(app, ["bench", "tasks", "--suite", "map", "--fov", "90"])
     assert off.exit_code == 1 and "--suite map does not read --fov: --fov goes with --suite context" in off.stderr
     result = runner.invoke(app, ["bench", "tasks", "--suite", "context_all", "--houses", "unseen", "--starts", "1",

@@ -33,6 +33,8 @@ def test_the_shipped_suite_and_a_good_file_load(tmp_path: Path) -> None:
     (GOOD.replace("apartment", "garage"), r"e\.yaml:2:\d+: case 1: no map 'garage'"),
     (GOOD.replace("}", ", done: 5}"), r"e\.yaml:2:\d+: case 1's done must be a list, not '5'"),
     (GOOD.replace("}", ", done: [[a]]}"), r"e\.yaml:2:\d+: a command of case 1's done must be a single value"),
+    (GOOD.replace("}", ", holding: 5}"), r"e\.yaml:2:\d+: case 1's holding '5' is not a class name"),   # hostile31
+    (GOOD.replace("}", ", holding: '!!'}"), r"e\.yaml:2:\d+: case 1's holding '!!' is not a class name"),
 ])
 def test_a_case_of_the_wrong_shape_is_said_at_its_line_and_column(tmp_path: Path, entry: str, message: str) -> None:
     """Each was a TypeError traceback (``plan: 5``) or taken as it was (a plan of one string read letter by

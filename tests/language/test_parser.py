@@ -320,6 +320,21 @@ def test_unknown_nouns_and_names_are_open_class(library: Library) -> None:
     assert parse_command("greet Xanthippe", library).frames[0].elements["theme"].kind == "person"
 
 
+def test_a_verb_of_the_library_read_as_a_noun_is_not_called_unknown(library: Library) -> None:
+    """"zap" alone (a verb of Heat, and of a frame a library adds): it was "unknown verb 'zap' ... the robot can ...
+    or zap" (hostile31); what to zap said, it is the verb. A verb of no frame is still unknown."""
+    zap = Frame("Zap", (LexicalUnit("zap"),), (Element("theme", "object"),),
+                postconditions=(Fact("zapped", ("theme",)),))
+    for known in (library, Library((*library.frames, zap), library.taxonomy)):
+        for said in ("zap", "zap now"):
+            with pytest.raises(CommandError, match=r"'zap' is read here as a thing, not as the library's verb 'zap': "
+                                                   r"say what to zap"):
+                parse_command(said, known)
+    assert [f.frame for f in parse_command("zap the cup", library).frames] == ["Heat"]
+    with pytest.raises(CommandError, match="unknown verb 'blorf'"):
+        parse_command("blorf", library)
+
+
 def test_a_new_frame_makes_new_verbs_without_touching_the_grammar(library: Library) -> None:
     water = Frame("Water", (LexicalUnit("water"), LexicalUnit("give water to")),
                   (Element("theme", "object"), Element("instrument", "container", "watering_can")),

@@ -329,6 +329,16 @@ def test_a_bad_map_in_code_raises_every_problem() -> None:
         Sensor(fov_deg=0)
 
 
+@pytest.mark.parametrize("fov", [0.999, 1e-9, 0.5])
+def test_a_sensor_narrower_than_a_degree_is_refused(fov: float) -> None:
+    """A look all round is 360 / fov looks: ``fov: 0.001`` made ``seal run`` go on without end (hostile31)."""
+    from seal_cli.maps.model import MIN_FOV
+
+    with pytest.raises(SealError, match=r"sensor fov must be degrees in \[1, 360\]"):
+        Sensor(fov_deg=fov)
+    assert Sensor(fov_deg=MIN_FOV).fov_deg == 1.0
+
+
 # -- broken map files -------------------------------------------------------------------------------------
 def expectations(path: Path) -> list[tuple[int, str]]:
     return [(int(line), text.strip()) for line, text in EXPECT.findall(path.read_text())]

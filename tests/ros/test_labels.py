@@ -27,6 +27,9 @@ def test_a_mapping_and_a_list_name_the_same_ids(tmp_path: Path) -> None:
     ("[spoon, [cup]]\n", "labels.yaml:1:9: label 1 must be a single value, not a list"),
     ("{1: spoon, 1: cup}\n", "labels.yaml:1:12: the labels repeats the key '1'"),
     ("{1: spoon\n", "labels.yaml:2:1: YAML syntax error"),
+    ("{cup: 1}\n", "labels.yaml:1:7: the label of cup must be a class's name, not '1' (YAML reads it as int)"),
+    ("[spoon, true]\n", "labels.yaml:1:9: label 1 must be a class's name, not 'true' (YAML reads it as bool)"),
+    ('[spoon, "cu\\0p"]\n', "labels.yaml:1:9: label 1 'cu\\x00p' holds '\\x00' (U+0000"),   # hostile31
 ])
 def test_bad_labels_files(tmp_path: Path, text: str, message: str) -> None:
     with pytest.raises(SealError) as caught:

@@ -248,7 +248,7 @@ def read(text: str, file: str = "<frame>") -> Contents:
     drawn under another line than the one named)."""
     text = text.replace("\r\n", "\n").replace("\r", "\n")
     builder = _Builder(text, file)
-    past = _past_bound(text, file, builder.lines)
+    past = _control(text, file, builder.lines) or _past_bound(text, file, builder.lines)
     if past is not None:
         builder.contents.problems.append(past)
         return builder.contents
@@ -266,6 +266,24 @@ def read(text: str, file: str = "<frame>") -> Contents:
         return builder.contents
     builder.build(tree)
     return builder.contents
+
+
+_CONTROL = re.compile(r"[\x00-\x08\x0b\x0e-\x1f\x7f-\x9f]")
+"""The control characters a ``.frame`` file may not hold anywhere (all but a tab, a line break and a form feed)."""
+
+
+def _control(text: str, file: str, lines: list[str]) -> SealError | None:
+    """The refusal of a file holding a control character, at the first: in a comment it was read with the comment,
+    silently (a NUL, hostile31), as YAML refuses it anywhere in a file; in a name it was "the frame is not closed"."""
+    found = _CONTROL.search(text)
+    if found is None:
+        return None
+    line = text.count("\n", 0, found.start()) + 1
+    column = found.start() - (text.rfind("\n", 0, found.start()) + 1) + 1
+    code = ord(found.group())
+    return SealError(f"a frame file may not hold the control character {found.group()!r} (U+{code:04X}), not even in "
+                     "a comment: remove it (a tab, a line break and a form feed are the only ones a frame file takes)",
+                     Where(file, line, column), source_line=lines[line - 1])
 
 
 MAX_WORDS = 150_000

@@ -37,6 +37,7 @@ from __future__ import annotations
 import contextlib
 import functools
 import math
+import os
 import re
 from collections.abc import Callable, Iterator
 from dataclasses import dataclass, replace
@@ -48,7 +49,7 @@ import yaml
 from numpy.typing import NDArray
 
 from seal_cli.errors import SealError, SealErrors, Where
-from seal_cli.fileio import MAX_IMAGE_BYTES, compose_yaml, composed, read_bytes, read_text
+from seal_cli.fileio import MAX_IMAGE_BYTES, compose_yaml, composed, read_bytes, read_text, shown_path
 from seal_cli.frames.taxonomy import check_class_name, class_key
 from seal_cli.maps.geometry import (
     FREE,
@@ -61,7 +62,19 @@ from seal_cli.maps.geometry import (
     fit_cells,
     shrink_factor,
 )
-from seal_cli.maps.model import MAX_LISTED, Map, MapWarning, ObjectTruth, Person, Place, Robot, Room, Sensor
+from seal_cli.maps.model import (
+    FOV_RANGE,
+    MAX_LISTED,
+    Map,
+    MapWarning,
+    ObjectTruth,
+    Person,
+    Place,
+    Robot,
+    Room,
+    Sensor,
+    fov_ok,
+)
 from seal_cli.maps.prepositions import ROOM_PREPOSITIONS
 from seal_cli.names import check_name_length, check_sayable, check_shown
 from seal_cli.resources import map_path
@@ -302,13 +315,29 @@ def _large_p5(levels: NDArray[Any], table: NDArray[np.int8]) -> ImageCells:
     return ImageCells(np.ascontiguousarray(np.concatenate(parts)), (left, height - bottom), factor, (width, height))
 
 
+def _missing_image(path: Path) -> str:
+    """Why an image that does not exist is missing: a link to nothing, or a loop of links, was "does not exist
+    (looked for map.pgm)", of a file there is (hostile31)."""
+    import errno
+
+    if not path.is_symlink():
+        return f"image {shown_path(path.name)} does not exist (looked for {shown_path(path)})"
+    try:
+        path.stat()
+    except OSError as exc:
+        if exc.errno == errno.ELOOP:
+            return f"image {shown_path(path)} is a loop of symbolic links (each links to another of them): link it " \
+                   "to the image file"
+    return f"image {shown_path(path)} is a symbolic link to {shown_path(os.readlink(path))}, which does not exist"
+
+
 def read_image_cells(path: Path, negate: bool = False, occupied_thresh: float = 0.65, free_thresh: float = 0.196,
                      mode: str = "trinary") -> ImageCells:
     """The cells of a map_server image (:class:`ImageCells`); an image of more than :data:`MAX_GRID_CELLS` pixels
     comes cropped to what it knows and coarsened to fit (a binary PGM a band of rows at a time; a PNG or a text
     PGM, decoded whole, only up to :data:`MAX_IMAGE_CELLS` pixels)."""
     if not path.exists():
-        raise SealError(f"image {path.name} does not exist (looked for {path})")
+        raise SealError(_missing_image(path))
     data = read_bytes(path, MAX_IMAGE_BYTES, "map image")
     if data[:2] == b"P5":
         width, height, maxval, pos = _pgm_header(data)
@@ -780,7 +809,7 @@ class _Reader(NodeReader):
         fields = {key: value for key, _, value in self.pairs_at(node, "sensor", ("sensor",), SENSOR_KEYS)}
         checks: dict[str, tuple[Callable[[float], bool], str]] = {
             "range": (lambda v: 0 < v <= MAX_METRES, f"a positive number of metres, at most {MAX_METRES:g}"),
-            "fov": (lambda v: 0 < v <= 360, "degrees in (0, 360]"),
+            "fov": (fov_ok, FOV_RANGE),
             "p_detect": (lambda v: 0 <= v <= 1, "a probability in [0, 1]"),
             "sigma": (lambda v: v > 0, "a positive number of metres"),
             "noise": (lambda v: v >= 0, "a number of metres, 0 or more")}

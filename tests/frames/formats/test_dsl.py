@@ -42,6 +42,21 @@ def test_a_caret_is_under_the_line_named_when_a_comment_holds_a_form_feed() -> N
     (problem,) = read('// a\x0cb\u2028c\nframe Wave "wave" {\n  theme person\n}\n', "w.frame").problems
     assert problem.line == 3 and str(problem).endswith("  theme person\n        ^")
 
+@pytest.mark.parametrize(("text", "line", "column", "code"), [
+    ("// a NUL \x00 here\n" + WAVE, 1, 10, 0), ("# \x1b[31m\n" + WAVE, 1, 3, 0x1B), (WAVE + "\x7f", 6, 1, 0x7F),
+    (WAVE.replace("theme: person", "theme: per\x00son"), 2, 13, 0), (WAVE.replace("{", "{\x85"), 1, 30, 0x85)])
+def test_a_control_character_anywhere_is_refused_at_it_even_in_a_comment(text: str, line: int, column: int,
+                                                                           code: int) -> None:
+    """In a comment a NUL was read with the comment, silently; in a name it was "the frame is not closed" (hostile31).
+    The line is shown with the character escaped, the caret under it."""
+    (problem,) = read(text, "w.frame").problems
+    assert (problem.file, problem.line, problem.column) == ("w.frame", line, column)
+    assert f"U+{code:04X}" in problem.message and "not even in a comment" in problem.message
+    shown = str(problem).split("\n")
+    assert not any(ch in "".join(shown) for ch in "\x00\x1b\x7f\x85")
+    assert shown[2].index("^") == shown[1].index("\\x")
+
+
 def test_a_bad_name_is_refused_where_it_is() -> None:
     (problem,) = read("frame wave {}\n", "w.frame").problems
     assert problem.line == 1 and problem.column == 7 and "capital letter" in problem.message

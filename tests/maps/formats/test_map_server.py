@@ -391,3 +391,18 @@ def test_a_rooms_preposition_is_read_and_a_bad_one_refused_at_its_column(tmp_pat
         load_map(path)
     assert "preposition must be one of in, on, at, not a list" in str(caught.value)
     assert (caught.value.line, caught.value.column) == (4, 50)      # at the list
+
+
+def test_an_image_that_is_a_link_to_nothing_or_a_loop_says_so(tmp_path: Path) -> None:
+    """Both were "image map.pgm does not exist (looked for map.pgm)", of a file that is there (hostile31)."""
+    from seal_cli.maps.formats.map_server import read_image_cells
+
+    (tmp_path / "dangling.pgm").symlink_to("gone.pgm")
+    (tmp_path / "a.pgm").symlink_to("b.pgm")
+    (tmp_path / "b.pgm").symlink_to("a.pgm")
+    with pytest.raises(SealError, match=r"dangling\.pgm is a symbolic link to gone\.pgm, which does not exist"):
+        read_image_cells(tmp_path / "dangling.pgm")
+    with pytest.raises(SealError, match=r"a\.pgm is a loop of symbolic links"):
+        read_image_cells(tmp_path / "a.pgm")
+    with pytest.raises(SealError, match=r"image none\.pgm does not exist"):
+        read_image_cells(tmp_path / "none.pgm")
