@@ -95,7 +95,23 @@ def said_as_plural(name: str) -> bool:
     if not words:
         return False
     word = words[-1]        # a class named by the plural of a pair ("gloves", "glasses"; not a drinking "glass")
-    return word != noun_lemma(word) or plural_only(word)
+    return word != noun_lemma(word) or plural_only(word) or _ends_in_a_pair(word)
+
+
+def _ends_in_a_pair(word: str) -> bool:
+    """Whether a word written as one is a compound whose last part is the plural of a pair
+    (:data:`~seal_cli.planning.grounding.PAIRED`): "sunglasses", "eyeglasses", "snowshoes" (e2e33: after `--done 'put
+    the sunglasses on the reception desk'`, "give them to Jack" was refused: the tables know "glasses", not
+    "sunglasses")."""
+    from seal_cli.language.morphology import noun_lemma
+    from seal_cli.planning.grounding import PAIRED
+
+    for k in range(1, len(word) - 3):
+        part = word[k:]
+        lemma = noun_lemma(part)
+        if part.endswith("s") and lemma != part and lemma in PAIRED:
+            return True
+    return False
 
 
 def instance_names(cls: str, n: int) -> tuple[str, ...]:
