@@ -736,7 +736,7 @@ def _on_map(phrase: Phrase, things: Things, text: str, category: str, asked: boo
         except SealError as wrong:
             raise _located(wrong.message, phrase, text) from None
         if called:
-            things.people.add(called[0])
+            things.people.update(called)
             return called
     if phrase.head.lower() in SPEAKER_WORDS or phrase.kind == "person" \
             or things.taxonomy.is_a(category, "person") is True and category != "thing":
