@@ -12,7 +12,8 @@ from seal_cli.cli.output import plain, styled
 
 
 def summary(m: Any) -> dict[str, Any]:
-    """The map as plain data: grid, rooms (with free area and the preposition they are said with), places, prior masses per room, objects."""
+    """The map as plain data: grid, rooms (with free area and the preposition they are said with), places, prior
+    masses per room, objects."""
     from seal_cli.maps.prepositions import room_preposition
 
     areas = m.room_free_area()

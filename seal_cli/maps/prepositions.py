@@ -43,8 +43,9 @@ def room_preposition(room: str, m: Map | None = None) -> str:
     (:func:`preposition`). ``seal map --json`` lists it per room."""
     if m is not None:
         index = m.room_id(room)
-        if index is not None and m.rooms[index].preposition:
-            return m.rooms[index].preposition
+        given = m.rooms[index].preposition if index is not None else None
+        if given:
+            return given
     return preposition(room)
 
 

@@ -55,7 +55,8 @@ def test_seal_map_json_says_each_rooms_preposition(tmp_path: Path) -> None:
 
     path = tmp_path / "m.yaml"
     path.write_text("bounds: [0, 0, 9, 3]\nrooms:\n  - {name: kitchen, box: [0, 0, 3, 3]}\n"
-                    "  - {name: balcony, box: [3, 0, 6, 3]}\n  - {name: sun_trap, box: [6, 0, 9, 3], preposition: at}\n")
+                    "  - {name: balcony, box: [3, 0, 6, 3]}\n"
+                    "  - {name: sun_trap, box: [6, 0, 9, 3], preposition: at}\n")
     result = CliRunner().invoke(app, ["map", str(path), "--json"])
     assert result.exit_code == 0, result.output
     rooms = {r["name"]: r["preposition"] for r in json.loads(result.stdout)["rooms"]}

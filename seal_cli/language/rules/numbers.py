@@ -32,7 +32,7 @@ def _label(s: State, i: int) -> Match | None:
 def _before_state_asked(s: State, i: int) -> bool:
     """Whether the number at ``i`` ends a thing's name right before the state a yes/no question asks ("is locker 2
     *open*?": the state is no noun it counts; e2e33)."""
-    from seal_cli.language.rules.requests import state_asked_at    # requests reads numbers' tags: imported late
+    from seal_cli.language.rules.requests import state_asked_at  # requests reads numbers' tags: imported late
 
     low = s.words[i].lower
     return (low.isascii() and low.isdigit() or low in NUMBERS and low not in VAGUE_NUMBERS) and \
