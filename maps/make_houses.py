@@ -7,7 +7,7 @@ breakfast, and ``studio.yaml``, e2e26's held-out open-plan studio flat, and ``co
 corner shop with its back rooms, and ``houseboat.yaml``, e2e28's held-out wide-beam houseboat, and ``library.yaml``, e2e29's held-out
 branch library, and ``bakery.yaml``, e2e30's held-out bakery with its bakehouse and back rooms, and ``workshop.yaml``, e2e31's held-out
 joinery workshop with its showroom, finishing room and back rooms, and ``school.yaml``, e2e32's held-out primary school
-block along one corridor (run once; the PGMs are committed next to this script).
+block along one corridor, and ``fitness_club.yaml``, e2e33's held-out fitness club with its sun deck (run once; the PGMs are committed next to this script).
 
     python maps/make_houses.py          # rewrites maps/<house>.pgm for each of HOUSES
 
@@ -359,8 +359,24 @@ SCHOOL = House(
     ),
 )
 
+FITNESS_CLUB = House(
+    "fitness_club", (0.0, 0.0, 16.0, 10.0),
+    walls=(
+        ((4.0, 0.0, 4.0, 10.0), ((2.0, 3.2),)),                 # reception | gym (the changing room only off the reception)
+        ((0.0, 5.0, 4.0, 5.0), ((1.5, 2.5),)),                  # reception | changing room
+        ((12.0, 0.0, 12.0, 6.0), ((2.0, 3.5),)),                # gym | studio
+        ((4.0, 6.0, 16.0, 6.0), ((5.5, 6.7), (9.0, 10.0), (13.5, 15.0))),  # juice bar, office; the studio's deck door
+        ((8.0, 6.0, 8.0, 10.0), ()),                            # juice bar | office
+        ((11.0, 6.0, 11.0, 10.0), ()),                          # office | sun deck
+    ),
+    blocks=(
+        (5.0, 0.2, 5.8, 2.0),      # the treadmills along the gym's south wall
+        (6.2, 0.2, 7.0, 2.0),
+    ),
+)
+
 HOUSES = (COTTAGE, OFFICE_FLOOR, CAFE, CLINIC, FARMHOUSE, TERRACE, BUNGALOW, LODGE, FLAT, CAREHOME, STUDENT_HOUSE,
-          GUESTHOUSE, STUDIO, CORNER_SHOP, HOUSEBOAT, LIBRARY, BAKERY, WORKSHOP, SCHOOL)
+          GUESTHOUSE, STUDIO, CORNER_SHOP, HOUSEBOAT, LIBRARY, BAKERY, WORKSHOP, SCHOOL, FITNESS_CLUB)
 
 
 def draw(house: House) -> np.ndarray:

@@ -12,13 +12,17 @@ from seal_cli.cli.output import plain, styled
 
 
 def summary(m: Any) -> dict[str, Any]:
-    """The map as plain data: grid, rooms (with free area), places, prior masses per room, objects."""
+    """The map as plain data: grid, rooms (with free area and the preposition they are said with), places, prior
+    masses per room, objects."""
+    from seal_cli.maps.prepositions import room_preposition
+
     areas = m.room_free_area()
     return {
         "name": m.name, "file": m.file, "bounds": list(m.bounds),
         "grid": {"shape": list(m.grid.shape), "resolution": m.grid.resolution, "origin": list(m.grid.origin)},
         "free_area": round(m.free_area, 3),
-        "rooms": [{"name": r.name, "area": round(r.area, 3), "free_area": round(areas[r.name], 3)} for r in m.rooms],
+        "rooms": [{"name": r.name, "area": round(r.area, 3), "free_area": round(areas[r.name], 3),
+                   "preposition": room_preposition(r.name, m)} for r in m.rooms],
         "places": [{"name": p.name, "class": p.cls, "at": list(p.at), "room": p.room, "openable": p.openable,
                     "open": p.open, "reach": p.reach} for p in m.places],
         "priors": {cls: {"masses": dict(masses), "rooms": {k: round(v, 4) for k, v in

@@ -200,13 +200,14 @@ def _not_contracted(verb: str) -> str:
 
 def _subject_size(words: Sequence[str]) -> int:
     """How many words a subject that is not the person asked takes: a determiner and the words up to the first
-    verb form ("the tea", "the red car"); a single word ("dinner", "Edith")."""
+    verb form ("the tea", "the red car", "the yoga class": a verb's -s form is not its lemma); a single word ("dinner",
+    "Edith")."""
     if words[0].lower() in DETERMINERS | POSSESSIVES:
         for k in range(1, len(words)):
             low = _negated(words[k]) or words[k].lower()
             if low in _BE or low in MODALS or low in _PERFECT or low in _DO or \
-                    k > 1 and verb_lemma(low) is not None and low.endswith("s"):
-                return k
+                    k > 1 and verb_lemma(low) not in (None, low) and low.endswith("s"):
+                return k                # "the yoga *class* is full": a noun ending in s is no verb's -s (e2e33)
         return 0
     return 1
 

@@ -570,11 +570,18 @@ class Map:
         (:meth:`kinds`, and ``kinds``) is spelt like ``cls``, which it does not know; else nothing. A refusal of a
         thing the map lacks then says what the user can fix: the map's ``{class: mgu}`` (hostile26: "the m knows no
         mug" said nothing of it). A kind among ``words`` (the classes the library knows) is spelt as meant, no typo:
-        "slice the bread" on a map with beds said "the map names a bed, spelt like it" (lead, stop 39)."""
+        "slice the bread" on a map with beds said "the map names a bed, spelt like it" (lead, stop 39). A kind whose
+        name holds every word of ``cls`` and more is said as a kind of its own ("coffee" on a map of coffee beans: "the
+        map names 'coffee beans', a kind of its own ...", e2e33: it said "a coffee beans, spelt like it (a typo in the
+        map?)")."""
         import difflib
 
         key = class_key(cls)
         known = sorted(k for k in {*self.kinds(), *(class_key(k) for k in kinds)} - {key} if k not in words)
+        parts = set(key.split("_"))
+        compound = next((k for k in known if parts < set(k.split("_"))), None)
+        if compound is not None:        # "coffee" on a map of coffee beans: a kind of its own, no typo (e2e33)
+            return f"; the map names '{compound.replace('_', ' ')}', a kind of its own: say that if it is what is meant"
         close = difflib.get_close_matches(key, known, n=1, cutoff=0.6)
         return f"; the map names a {close[0].replace('_', ' ')}, spelt like it (a typo in the map?)" if close else ""
 

@@ -16,7 +16,7 @@ from seal_cli.frames.taxonomy import class_key
 if TYPE_CHECKING:
     from seal_cli.maps.model import Map
 
-__all__ = ["OPEN_PLATFORMS", "ROOM_PREPOSITIONS", "located", "preposition"]
+__all__ = ["OPEN_PLATFORMS", "ROOM_PREPOSITIONS", "located", "preposition", "room_preposition"]
 
 ROOM_PREPOSITIONS = ("in", "on", "at")
 """The prepositions a map may give a room."""
@@ -38,12 +38,18 @@ def preposition(name: str) -> str:
     return "on" if head in OPEN_PLATFORMS or singular in OPEN_PLATFORMS else "in"
 
 
-def located(room: str, m: Map | None = None) -> str:
-    """Where something is, said: "in the kitchen", "on the balcony" (the map's preposition for the room when it
-    gives one, else :func:`preposition`), the map's spelling said as words."""
-    said = room.replace("_", " ")
+def room_preposition(room: str, m: Map | None = None) -> str:
+    """The preposition a room is said with: the map's for the room when it gives one, else English's
+    (:func:`preposition`). ``seal map --json`` lists it per room."""
     if m is not None:
         index = m.room_id(room)
-        if index is not None and m.rooms[index].preposition:
-            return f"{m.rooms[index].preposition} the {said}"
-    return f"{preposition(room)} the {said}"
+        given = m.rooms[index].preposition if index is not None else None
+        if given:
+            return given
+    return preposition(room)
+
+
+def located(room: str, m: Map | None = None) -> str:
+    """Where something is, said: "in the kitchen", "on the balcony" (:func:`room_preposition`), the map's spelling
+    said as words."""
+    return f"{room_preposition(room, m)} the {room.replace('_', ' ')}"

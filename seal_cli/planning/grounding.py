@@ -153,6 +153,16 @@ def where_words(text: str) -> tuple[str, ...]:
     return _split(words_of(text))[1]
 
 
+def _said_in_plural(text: str, size: int) -> bool:
+    """Whether the last of the first ``size`` words of a phrase (its thing's, :func:`words_of` without the lemmas)
+    is said in the plural ("the *guests* in the lounge")."""
+    tokens = [t for t in re.findall(r"[^\W_]+", text.lower().replace("_", " ")) if t not in DROPPED]
+    if not 0 < size <= len(tokens):
+        return False
+    last = tokens[size - 1]
+    return noun_lemma(last) != last
+
+
 class MapNames:
     """The rooms, places and people of a map, by the words that call them (see the module docstring)."""
 
@@ -215,7 +225,8 @@ class MapNames:
         kitchen"): the ids of the people (and :data:`SPEAKER`) whose role its thing's last words are,
         in the map's order; empty when it names no role of the map. Where the phrase says they are
         narrows them; nobody there is refused. Several left is refused too, naming them: a robot
-        must not guess whom a thing is for."""
+        must not guess whom a thing is for; the role said in the plural ("tell the guests that ...") calls them
+        all (e2e33)."""
         thing, where = _split(words_of(text))
         said = ["_".join(thing[k:]) for k in range(len(thing))]
         role = next((r for r in said if r in self.map.roles), None)
@@ -229,7 +240,7 @@ class MapNames:
                 raise Refusal(f"the {self._house} has no {what} {located(room, self.map)}; it has "
                               f"{self._who(found)}")
             found = inside
-        if len(found) > 1:
+        if len(found) > 1 and not _said_in_plural(text, len(thing)):
             raise Refusal(f"'the {' '.join(thing)}' could be {self._who(found, ' or ')}: the {self._house} has "
                           f"{len(found)} people with the role {what}; say which one by name")
         return found

@@ -95,7 +95,23 @@ def said_as_plural(name: str) -> bool:
     if not words:
         return False
     word = words[-1]        # a class named by the plural of a pair ("gloves", "glasses"; not a drinking "glass")
-    return word != noun_lemma(word) or plural_only(word)
+    return word != noun_lemma(word) or plural_only(word) or _ends_in_a_pair(word)
+
+
+def _ends_in_a_pair(word: str) -> bool:
+    """Whether a word written as one is a compound whose last part is the plural of a pair
+    (:data:`~seal_cli.planning.grounding.PAIRED`): "sunglasses", "eyeglasses", "snowshoes" (e2e33: after `--done 'put
+    the sunglasses on the reception desk'`, "give them to Jack" was refused: the tables know "glasses", not
+    "sunglasses")."""
+    from seal_cli.language.morphology import noun_lemma
+    from seal_cli.planning.grounding import PAIRED
+
+    for k in range(1, len(word) - 3):
+        part = word[k:]
+        lemma = noun_lemma(part)
+        if part.endswith("s") and lemma != part and lemma in PAIRED:
+            return True
+    return False
 
 
 def instance_names(cls: str, n: int) -> tuple[str, ...]:
@@ -720,7 +736,7 @@ def _on_map(phrase: Phrase, things: Things, text: str, category: str, asked: boo
         except SealError as wrong:
             raise _located(wrong.message, phrase, text) from None
         if called:
-            things.people.add(called[0])
+            things.people.update(called)
             return called
     if phrase.head.lower() in SPEAKER_WORDS or phrase.kind == "person" \
             or things.taxonomy.is_a(category, "person") is True and category != "thing":
@@ -1617,7 +1633,7 @@ def _people_named(bindings: Sequence[Binding], things: Things) -> list[str]:
     return [v for b in bindings for _, v in b.values if v in things.people and v != SPEAKER]
 
 
-def _the_ones_said_where(commanded: Sequence[Binding], things: Things) -> None:
+def _the_ones_said_where(commanded: list[Binding], things: Things) -> None:
     """A thing of a kind the map has several of, said with where it is ("the mug in the green room", "the cup in
     the cupboard": the frame's source), is the one there (e2e24): the command's name of it (``mug``, the map's
     first mug) trades names with the map's thing of that class in that room or place, when the first is not there
@@ -1636,6 +1652,12 @@ def _the_ones_said_where(commanded: Sequence[Binding], things: Things) -> None:
         if things.lies_in(theme, source):
             continue
         cls = things.classes[theme]
+        if (holding := _source_among(binding, source, cls, used, things)) is not None:
+            index = commanded.index(binding)
+            commanded[index] = binding = binding.frame.bind({**binding.elements, "source": holding})
+            source = holding
+            if things.lies_in(theme, source):
+                continue
         there = next((n for n, c in things.classes.items() if c == cls and n != theme and n not in used
                       and n not in things.fixed and things.lies_in(n, source)), None)
         if there is not None:
@@ -1647,6 +1669,35 @@ def _the_ones_said_where(commanded: Sequence[Binding], things: Things) -> None:
             things.all_there.append(f"the {_words(m.name)} places no {words} {said} (it has "
                                     f"one in or on {', '.join(elsewhere)}): seal run looks there first, as the command "
                                     f"says, says it found none, then takes the nearest other {words}")
+
+
+def _source_among(binding: Binding, source: str, cls: str, used: set[str], things: Things) -> str | None:
+    """Of several places of one class a source said did not tell apart ("take the towel *on the bench* to the
+    changing room", three benches), the one where the map has a thing of the theme's class, when grounding chose one
+    with none (:meth:`MapNames._one_of <seal_cli.planning.grounding.MapNames._one_of>`: the nearest, bench_1, with
+    no towel): the nearest of those that hold one by drive from where the robot starts, its choice said (e2e33: the
+    plan said the towel was in the changing room already, and the run looked on the empty bench first). None: the
+    source chosen holds one, none does, or the source was told apart by the command."""
+    from seal_cli.maps.reach import drive_lengths
+
+    m, names = things.map, things.names
+    if m is None or names is None or source not in names.chosen or not things.is_place(source):
+        return None
+    kind = things.class_of(source)
+    among = [class_key(p.name) for p in m.places if class_key(p.cls) == kind]
+
+    def holds(place: str) -> bool:
+        return any(c == cls and n not in things.fixed and things.lies_in(n, place) for n, c in things.classes.items())
+
+    if holds(source) or not (holders := [p for p in among if holds(p)]):
+        return None
+    lengths = drive_lengths(m, m.robot.xy, holders)
+    one = holders[min(range(len(holders)), key=lambda k: (lengths[k], k))]
+    said = names.chosen.pop(source).split(": chose", 1)[0]
+    names.chosen[one] = (f"{said}: chose {one}, the one the map has a {cls.replace('_', ' ')} on or in; say its room "
+                         f"or its number ('{one}') to choose")
+    names.nearest_of.pop(source, None)
+    return one
 
 
 def the_goals_said_among(commanded: list[Binding], things: Things) -> dict[Binding, tuple[str, ...]]:

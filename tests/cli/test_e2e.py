@@ -134,7 +134,7 @@ def test_the_shipped_suite_is_large_and_its_plans_are_right(library: object) -> 
     cases = [c for c in load_cases() if c.map == "apartment"]
     houses = {*MAPS, "townhouse", "office_floor", "cafe", "clinic", "terrace", "farmhouse", "bungalow", "lodge",
               "flat", "carehome", "student_house", "guesthouse", "studio", "corner_shop", "houseboat", "library",
-              "bakery", "workshop"}
+              "bakery", "workshop", "fitness_club"}
     assert len(load_cases()) >= 100 and {c.map for c in load_cases()} == houses
     the_map = load_map(Path(__file__).resolve().parents[2] / "maps" / "apartment.yaml")
     wrong = [(c.text, got) for c in cases for right, got in [plan_steps(c, the_map, library)] if not right]
@@ -158,7 +158,7 @@ def test_the_example_houses_plans_are_right(library: object) -> None:
 
     houses = ("townhouse", "office_floor", "cafe", "clinic", "terrace", "farmhouse", "bungalow", "lodge", "flat",
               "carehome", "student_house", "guesthouse", "studio", "corner_shop", "houseboat", "library", "bakery",
-              "workshop")
+              "workshop", "fitness_club")
     cases = [c for c in load_cases() if c.map in houses]
     assert len(cases) >= 120 and all(c.file is not None and Path(c.file).is_file() for c in cases)
     maps = {c.map: load_map(c.file) for c in cases if c.file is not None}

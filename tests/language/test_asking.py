@@ -21,6 +21,8 @@ from seal_cli.language.parser import parse_command
     ("if the tea is ready", "Raj", "is the tea ready?"),                 # not the person asked: the subject stays
     ("if Edith needs help", "Raj", "does Edith need help?"),
     ("if he has seen her keys", "", "have you seen her keys?"),          # "her" is someone else after "he"
+    ("whether the yoga class is full", "Rosa", "is the yoga class full?"),  # e2e33: "class" is no verb's -s form
+    ("if the red glass breaks", "Rosa", "does the red glass break?"),
 ])
 def test_an_indirect_question_is_put_as_the_person_hears_it(said: str, asked: str, question: str) -> None:
     assert direct_question(said.split(), asked.split()) == question

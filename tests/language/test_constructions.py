@@ -4521,3 +4521,34 @@ def test_for_a_person_is_for_whom_never_where(
         text: str, want: list[tuple[str, dict[str, str]]], library: Library) -> None:
     """words46: "follow them for me" made "me" Follow's goal (after it was no longer read as a Bring)."""
     assert_reads(text, want, library)
+
+
+@pytest.mark.parametrize(("text", "want"), [
+    ("show Jack the way to the juice bar", [("Guide", {"theme": "Jack", "goal": "bar"})]),
+    ("guide Jack to the kitchen", [("Guide", {"theme": "Jack", "goal": "kitchen"})]),
+    ("show Bill the way to the kitchen", [("Guide", {"theme": "Bill", "goal": "kitchen"})]),
+])
+def test_a_capitalised_name_after_a_verb_of_going_is_no_unknown_verb(
+        text: str, want: list[tuple[str, dict[str, str]]], library: Library) -> None:
+    """e2e33: "show Jack the way to the juice bar" was refused ("unknown verb 'jack'"): a name that is also a verb's
+    base form, right after a verb of going, was read as another verb's clause (words42's "go chat with ..."). A capital
+    inside the sentence is a name, as after "to"; "go see them" and "go chat with the guard" stay verbs."""
+    assert_reads(text, want, library)
+    with pytest.raises(CommandError, match="unknown verb 'chat'"):
+        parse_command("go chat with the guard", library)
+
+
+@pytest.mark.parametrize(("text", "want"), [
+    ("is locker 2 open?", [("LookAt", {"theme": "locker"})]),
+    ("is the locker 2 open?", [("LookAt", {"theme": "locker"})]),
+    ("is table two still clean?", [("LookAt", {"theme": "table"})]),
+    ("are 2 cups clean?", [("LookAt", {"theme": "cup"})]),
+])
+def test_a_state_question_of_a_numbered_thing(text: str, want: list[tuple[str, dict[str, str]]],
+                                              library: Library) -> None:
+    """e2e33: "is locker 2 open?" was refused ("unknown verb 'is'"): a number right before the state made the state a
+    noun's (the number counting "open"). A number after a noun, before the state a question asks, names the thing; a
+    number before a noun still counts it."""
+    assert_reads(text, want, library)
+    theme = parse_command(text, library).frames[0].elements["theme"]
+    assert theme.text.split()[-1] in ("2", "two", "cups")

@@ -14,7 +14,7 @@ from tests.conftest import module_from_file
 MAPS = Path(__file__).resolve().parents[2] / "maps"
 HOUSES = ["townhouse", "office_floor", "cafe", "clinic", "farmhouse", "terrace", "bungalow", "lodge", "flat",
           "carehome", "student_house", "guesthouse", "studio", "corner_shop", "houseboat", "library", "bakery",
-          "workshop", "school"]
+          "workshop", "school", "fitness_club"]
 
 
 def make_houses():  # type: ignore[no-untyped-def]

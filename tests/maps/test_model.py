@@ -761,6 +761,10 @@ def test_a_kind_the_map_spells_like_an_unknown_one_is_named() -> None:
                rooms=(Room.box("kitchen", 0, 0, 10, 10),))
     assert "a bed, spelt like it" in beds.spelt_like("bread")
     assert beds.spelt_like("bread", words={"bed", "bread"}) == ""       # a word the library knows is no typo
+    beans = Map("m", (0.0, 0.0, 10.0, 10.0), priors={"coffee_beans": {"kitchen": 1.0}},
+                rooms=(Room.box("kitchen", 0, 0, 10, 10),))
+    assert beans.spelt_like("coffee") == ("; the map names 'coffee beans', a kind of its own: say that if it is what "
+                                          "is meant")          # a compound of the word, no typo (e2e33)
 
 
 def test_rooms_drawn_one_over_another_are_said_up_to_a_bound(tmp_path: Path) -> None:

@@ -275,6 +275,21 @@ def test_a_role_several_people_have_is_refused_naming_them_and_a_room_said_narro
         plan_text("follow the cook in the ward", library, map=ward)
 
 
+def test_a_role_said_in_the_plural_calls_everyone_with_it(library: Library, tmp_path: Path) -> None:
+    """e2e33: "tell the guests that breakfast is ready" on the guesthouse (two guests) was refused as "the guest"
+    is; said in the plural, the role calls them all, as "Anna and Ben" does; a room said narrows them."""
+    ward = load_map(two_nurses(tmp_path))
+    told = plan_text("tell the nurses that the doctor is here", library, map=ward)
+    assert [str(s) for s in told.steps] == ["Tell(message=the_doctor_is_here, recipient=nora)",
+                                            "Tell(message=the_doctor_is_here, recipient=ida)"]
+    assert [str(s) for s in plan_text("find the nurses", library, map=ward).steps] == ["Find(theme=nora)",
+                                                                                         "Find(theme=ida)"]
+    narrowed = plan_text("bring the nurses in the office a cup", library, map=ward)
+    assert str(narrowed.steps[-1]) == "Bring(theme=cup, recipient=ida)"
+    with pytest.raises(SealError, match=r"'the nurse' could be nora \(ward\) or ida \(office\)"):
+        plan_text("find the nurse", library, map=ward)
+
+
 def test_a_role_nobody_has_is_warned_about_like_a_name_nobody_has(library: Library) -> None:
     plan = plan_text("bring the cup to the nurse", library, map=load_map(APARTMENT))
     assert str(plan.steps[-1]) == "Bring(theme=cup, recipient=nurse)"

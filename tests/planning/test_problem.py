@@ -1079,6 +1079,38 @@ def test_a_thing_the_map_names_in_the_plural_is_them(library: Library) -> None:
     assert not said_as_plural("mug") and not said_as_plural("box") and not said_as_plural("glass")
 
 
+def test_them_for_a_compound_of_a_pair_said_as_one_word(library: Library) -> None:
+    """e2e33: after `--done 'put the sunglasses on the reception desk'` on the fitness club, "give them to Jack" was
+    refused: the tables know "glasses" as a pair, not "sunglasses". A word ending in a pair's plural is one."""
+    from seal_cli.maps.formats.map_server import load_map
+    from seal_cli.pipeline import plan
+    from seal_cli.planning.problem import said_as_plural
+
+    m = load_map(Path(__file__).resolve().parents[2] / "maps" / "fitness_club.yaml")
+    assert [str(s) for s in plan("give them to Jack", library, map=m,
+                                 done=["put the sunglasses on the reception desk"]).steps] == [
+        "Pick(theme=sunglasses, source=reception_desk_1)", "Give(theme=sunglasses, recipient=jack)"]
+    assert said_as_plural("sunglasses") and said_as_plural("eyeglasses_1") and said_as_plural("snowshoes")
+    assert not said_as_plural("sunglass") and not said_as_plural("canvas") and not said_as_plural("class")
+
+
+def test_a_source_of_several_places_is_the_one_that_holds_the_thing(library: Library) -> None:
+    """e2e33: "take the towel on the bench to the changing room" on the fitness club (three benches, a towel on the
+    gym's bench_2 only, clean towels on the changing room's shelf) planned nothing: grounding chose bench_1, the
+    nearest, with no towel, and the towel named was the shelf's, in the changing room already. The bench with a towel
+    is the one meant, and the warning says so; a bench told apart by the command stays as said."""
+    from seal_cli.maps.formats.map_server import load_map
+    from seal_cli.pipeline import plan
+
+    m = load_map(Path(__file__).resolve().parents[2] / "maps" / "fitness_club.yaml")
+    got = plan("take the towel on the bench to the changing room", library, map=m)
+    assert [str(s) for s in got.steps] == ["Pick(theme=towel, source=bench_2)",
+                                           "Bring(theme=towel, goal=changing_room, source=bench_2)"]
+    assert any("chose bench_2, the one the map has a towel on or in" in w for w in got.warnings)
+    told = plan("take the towel on bench 1 to the gym", library, map=m)
+    assert [str(s) for s in told.steps][0] == "Pick(theme=towel, source=bench_1)"
+
+
 def test_back_into_one_of_several_places_is_the_one_it_came_from(library: Library) -> None:
     """e2e32: after `--done 'take the ball to the classroom'` on the school (the ball taken from the hall's cupboard),
     "put it back in the cupboard" chose the classroom's cupboard, the nearest of four; back is the one it came

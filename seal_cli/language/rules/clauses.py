@@ -459,6 +459,8 @@ def _unknown_unjoined(s: State, i: int) -> Match | None:
     to = words[i].lower == "to"
     if s.verb_index >= 0 and not to and i + 1 < len(words) and s.prev_tag() == Tag.VERB and \
             words[i + 1].lower in PREPOSITIONS and _going_only(s, str(s.out[s.verb_index].info)):
+        if capitalised(words[i]):
+            return None                 # "guide *Jack* to the kitchen": a capital inside the sentence is a name (e2e33)
         low = words[i].lower            # "go *chat* with the person": a verb no frame lists, then its preposition
         if verb_lemma(low) == low and s.verb_at(i) is None and low not in CLOSED and low not in s.lexicon.things and \
                 "verb" in parts_of_speech(low) and parts_of_speech(low) <= _VERB_OR_NOUN:
@@ -469,6 +471,8 @@ def _unknown_unjoined(s: State, i: int) -> Match | None:
                                        words[i + 1].lower not in NP_OPENERS):
         return None
     if not to and s.prev_tag() == Tag.VERB and _going_only(s, str(s.out[s.verb_index].info)):
+        if capitalised(words[i]):
+            return None                 # "show *Jack* the way to ...": a name, as after "to" (e2e33)
         low = words[i].lower            # "go *see* them": a verb of going, then another verb's own clause
         if verb_lemma(low) == low and s.verb_at(i) is None and low not in CLOSED and low not in s.lexicon.things and \
                 (words[i + 1].lower not in NP_OPENERS or parts_of_speech(low) <= _VERB_OR_NOUN):

@@ -24,9 +24,19 @@ def _number(s: State, i: int) -> tuple[int, object]:
 
 
 def _label(s: State, i: int) -> Match | None:
-    if s.prev_tag() in (Tag.WORD, Tag.NAME) and s.label_at(i):
+    if s.prev_tag() in (Tag.WORD, Tag.NAME) and (s.label_at(i) or _before_state_asked(s, i)):
         return s.emit(i, 1, Tag.LABEL, s.words[i].lower)          # "room 214", "table 9": no count
     return None
+
+
+def _before_state_asked(s: State, i: int) -> bool:
+    """Whether the number at ``i`` ends a thing's name right before the state a yes/no question asks ("is locker 2
+    *open*?": the state is no noun it counts; e2e33)."""
+    from seal_cli.language.rules.requests import state_asked_at  # requests reads numbers' tags: imported late
+
+    low = s.words[i].lower
+    return (low.isascii() and low.isdigit() or low in NUMBERS and low not in VAGUE_NUMBERS) and \
+        state_asked_at(s, i + 1)
 
 
 def _number_as_noun(s: State, i: int) -> Match | None:
@@ -210,7 +220,9 @@ LABEL = Rule("number naming a thing", _label, (
     Example("go to room 214", "214", Tag.LABEL),
     Example("clean meeting room three", "three", Tag.LABEL),
     Example("carry the tray to table one", "one", Tag.LABEL),         # words42: a bare noun after a preposition
-), _digits_or_number, "a number after a noun names a numbered thing, unless a noun follows it",
+    Example("is locker 2 open?", "2", Tag.LABEL),                    # e2e33: the state asked is no noun counted
+), _digits_or_number, "a number after a noun names a numbered thing, unless a noun follows it (the state a "
+   "question asks is none)",
    after=frozenset([Tag.WORD, Tag.NAME]))
 NUMBER_AS_NOUN = Rule("number as a noun", _number_as_noun, (
     Example("cut it into eight", "eight", Tag.WORD),

@@ -635,13 +635,31 @@ def _state_question_end(s: State, i: int) -> int | None:
             continue
         before = words[q - 1].lower
         if before in NP_OPENERS or before in PREPOSITIONS or before in BE_WORDS or \
-                before.isdigit():
+                before.isdigit() and not _numbered_name(s, q - 1, i):
             return None                          # "is the cup on *the counter*": a noun in a phrase
         if any(s.verb_at(k) and words[k - 1].lower not in NP_OPENERS
                and not s.np_starts(k - 1) for k in range(i + 1, q)):
             return None
         return q
     return None
+
+
+def state_asked_at(s: State, k: int) -> bool:
+    """Whether the words from ``k`` to the clause's end are the state a yes/no question of state asks ("is locker 2
+    *open*?"), in a clause whose verb is that question's (``STATE_MEANS``): a number before them names the thing
+    (a label), it counts nothing (e2e33)."""
+    return s.verb_index >= 0 and s.out[s.verb_index].info == STATE_MEANS and k < len(s.words) and \
+        _state_from(s, k, _state_stop(s, k)) == k
+
+
+def _numbered_name(s: State, k: int, start: int) -> bool:
+    """Whether the digits at ``k`` end a numbered name ("is *locker 2* open?", "is the light in *room 3* on?"): a
+    noun before them, inside the phrase that starts at ``start`` (e2e33: the number made the state a noun's)."""
+    if k - 1 < start:
+        return False
+    noun = s.words[k - 1].lower
+    return noun.isalpha() and noun not in CLOSED and noun not in NP_OPENERS and noun not in PREPOSITIONS and \
+        noun not in BE_WORDS
 
 
 _ENSURED_BE = BE_WORDS | frozenset(["gets", "get", "stays", "stay", "remains", "remain"])
