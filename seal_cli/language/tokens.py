@@ -93,8 +93,8 @@ _TOKEN = re.compile(r"""
   | (?P<dash>[—–]|-+>|=>|-{2,}|(?<=\s)-(?=\s))            # a dash (or "->") between clauses reads as ";"
   | (?P<punct>[,;:.!?]+)
   | (?P<quote>["“”'‘’`()\[\]])                             # quotes and brackets are ignored
-  | (?P<space>\s+)
 """, re.VERBOSE)
+"""A token; what lies between two is white space (:func:`_spaces_only`), else no token of the command."""
 _CONTROL = re.compile(r"[\x00-\x08\x0b-\x1f\x7f-\x9f]")
 _SURROGATE = re.compile("[\ud800-\udfff]")
 """What Python makes of a byte of the command line that is not UTF-8 (U+DC80 to U+DCFF: ``surrogateescape``), or any
@@ -126,11 +126,11 @@ def tokenize(text: str) -> list[Word]:
     for match in _TOKEN.finditer(read):
         start, end = match.span()
         if start != pos:
-            raise CommandError(_unexpected(said[pos]), pos + 1, said, ["a word"])
+            _spaces_only(read, pos, start, said)
         pos = end
         kind = match.lastgroup
-        if kind == "space" or kind == "quote" and start not in paired:
-            continue                    # as many spaces as words: the commonest token first
+        if kind == "quote" and start not in paired:
+            continue
         if kind == "quote":             # a bracket of a pair: the aside it holds (``statements.BRACKETED``)
             words.append(Word(read[start], start, pos))
             continue
@@ -139,19 +139,20 @@ def tokenize(text: str) -> list[Word]:
             if not typed.isascii():
                 _check_whole_numbers(typed, start, said)
                 _check_one_alphabet(typed, start, said)
-            two = RUN_TOGETHER.get(typed.lower()) if len(typed) == 5 else None     # all five letters
+            low = typed.lower()
+            two = RUN_TOGETHER.get(low) if len(typed) == 5 else None     # all five letters
             if two is not None:                                  # "gimme": "give" and "me", each its letters
                 cut = start + len(two[2])
                 words.append(Word(text[start:cut], start, cut, lower=two[0]))
                 words.append(Word(text[cut:end], cut, end, lower=two[1]))
                 continue
-            one = READ_AS_ONE.get(f"{words[-1].lower} {typed.lower()}") if words and words[-1].end < start \
-                else None
+            one = READ_AS_ONE.get(f"{words[-1].lower} {low}") if low in _READ_AS_ONE_LAST and words and \
+                words[-1].end < start else None
             if one is not None:                                  # "prior to": "before", one word of both
                 first = words.pop()
                 words.append(Word(text[first.start:pos], first.start, pos, lower=one))
                 continue
-            slip = function_word(typed.lower()) if typed.isalpha() and (typed.islower() or typed[1:].islower() and (
+            slip = function_word(low) if typed.isalpha() and (typed.islower() or typed[1:].islower() and (
                 not words or words[-1].lower in END_MARKS)) else None
             words.append(Word(typed, start, pos, lower=slip))    # "wher": "where" (slips.function_word)
         elif kind == "punct" and match.group() == "." and words and words[-1].end == start and \
@@ -169,8 +170,20 @@ def tokenize(text: str) -> list[Word]:
         elif kind == "poss":
             words.append(Word("'s", start, pos))
     if pos != len(text):
-        raise CommandError(_unexpected(said[pos]), pos + 1, said, ["a word"])
+        _spaces_only(read, pos, len(text), said)
     return words
+
+
+_READ_AS_ONE_LAST = frozenset(two.split()[-1] for two in READ_AS_ONE)
+"""The last words of :data:`~seal_cli.language.english.READ_AS_ONE`: only at one of them is the pair looked up."""
+
+
+def _spaces_only(read: str, start: int, end: int, said: str) -> None:
+    """Refuse the first character of ``read[start:end]`` (the text between two tokens) that is no white space, at
+    its column (``said``: the command as typed, for the message)."""
+    for k in range(start, end):
+        if not read[k].isspace():
+            raise CommandError(_unexpected(said[k]), k + 1, said, ["a word"])
 
 
 _MARKER = re.compile(r"""
