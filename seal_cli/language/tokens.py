@@ -363,7 +363,7 @@ def _title_before_name(text: str, pos: int, written: bool = True) -> bool:
 def capitalised(word: Word) -> bool:
     """Whether a word is written with a capital and then lower case ("Robin"; not "TV")."""
     text = word.text
-    return text[:1].isupper() and any(c.islower() for c in text[1:])
+    return text[:1].isupper() and (text[1:2].islower() or any(c.islower() for c in text[2:]))
 
 
 def printable(text: str) -> str:
