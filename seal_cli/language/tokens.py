@@ -66,11 +66,7 @@ class Word:
         _end(self, end)
         _tag(self, tag)
         _info(self, info)
-        if lower is None:
-            lower = text.lower()
-            lower = lower.replace("’", "'") if "’" in lower else lower
-            lower = SPELLINGS.get(lower, lower)         # "pls": "please"
-        _lower(self, lower)
+        _lower(self, read_word(text) if lower is None else lower)
 
     def tagged(self, tag: str, info: object = None) -> Word:
         """The same span with another tag (its text read afresh)."""
@@ -78,6 +74,26 @@ class Word:
 
     def __repr__(self) -> str:
         return f"Word({self.text!r}, {self.start}, {self.end}, {str(self.tag)!r})"
+
+
+def read_word(text: str) -> str:
+    """A word's text as read: lower case, the typographic apostrophe plain, a known spelling normalised ("pls":
+    "please"). Remembered by text (:data:`READ_KEPT` of them): every word is made again when it is tagged, and a
+    command's words are mostly the few hundred every command says."""
+    lower = _READ.get(text)
+    if lower is None:
+        lower = text.lower()
+        lower = lower.replace("’", "'") if "’" in lower else lower
+        lower = SPELLINGS.get(lower, lower)
+        if len(_READ) >= READ_KEPT:
+            _READ.clear()
+        _READ[text] = lower
+    return lower
+
+
+READ_KEPT = 65536
+"""How many texts :func:`read_word` remembers before it starts again."""
+_READ: dict[str, str] = {}
 
 
 _text, _start, _end, _tag, _info, _lower = (getattr(Word, name).__set__ for name in
