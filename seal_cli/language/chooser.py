@@ -88,8 +88,9 @@ def posterior(prior: Mapping[str, int], weights: Mapping[str, Mapping[str, float
     z = logits(weights, keys, feats)
     scores = {k: math.log(prior[k]) + z[k] for k in keys}
     top = max(scores.values(), default=0.0)
-    total = sum(math.exp(v - top) for v in scores.values())
-    return {k: math.exp(v - top) / total for k, v in scores.items()}
+    shares = {k: math.exp(v - top) for k, v in scores.items()}
+    total = sum(shares.values())
+    return {k: share / total for k, share in shares.items()}
 
 
 def room_weights(said: Sequence[tuple[str, str]], spread: float) -> list[float]:

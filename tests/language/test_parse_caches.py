@@ -3,9 +3,9 @@
 What was made quicker (docs/benchmarks.md, "Parsing speed: this round (speed1)") is checked against the
 plain code it replaced, kept here as the reference: phrase tables read word by word
 (``state.match_phrase``, ``state.longest_phrase``), the rules' gates asked afresh at every word, each
-phrase grounded anew, the library's types asked without memory and no parse tree shared; and, since perf46, the
-chooser's sums taken row by row (``chooser.logits``) and each word's text read afresh (``tokens.read_word``). The outputs
-of both, parse or error, must be equal on GPSR dev, ALFRED valid_seen and train goals (with ALFRED's
+phrase grounded anew, the library's types asked without memory and no parse tree shared; and, since perf46,
+the chooser's sums taken row by row (``chooser.logits``) and each word's text read afresh (``tokens.read_word``).
+The outputs of both, parse or error, must be equal on GPSR dev, ALFRED valid_seen and train goals (with ALFRED's
 classes), every set of people's wording in ``tests/data`` and the commands of the end-to-end suites.
 """
 
@@ -25,8 +25,8 @@ import seal_cli.language.english as english
 from seal_cli.errors import SealError
 from seal_cli.frames.library import Library
 from seal_cli.language import chooser, lexicon, state, tokens
-from seal_cli.language.english import SPELLINGS
 from seal_cli.language.element_types import Types
+from seal_cli.language.english import SPELLINGS
 from seal_cli.language.grounding import Vocabulary
 from seal_cli.language.parser import CommandParser
 from seal_cli.language.tokens import Word, tokenize
