@@ -110,7 +110,7 @@ _TOKEN = re.compile(r"""
   | (?P<punct>[,;:.!?]+)
   | (?P<quote>["“”'‘’`()\[\]])                             # quotes and brackets are ignored
 """, re.VERBOSE)
-"""A token; what lies between two is white space (:func:`_spaces_only`), else no token of the command."""
+"""A token; what lies between two is white space, else no token of the command (:func:`_refuse_between`)."""
 _CONTROL = re.compile(r"[\x00-\x08\x0b-\x1f\x7f-\x9f]")
 _SURROGATE = re.compile("[\ud800-\udfff]")
 """What Python makes of a byte of the command line that is not UTF-8 (U+DC80 to U+DCFF: ``surrogateescape``), or any
@@ -141,8 +141,8 @@ def tokenize(text: str) -> list[Word]:
     pos = 0
     for match in _TOKEN.finditer(read):
         start, end = match.span()
-        if start != pos:
-            _spaces_only(read, pos, start, said)
+        if start != pos and not read[pos:start].isspace():
+            _refuse_between(read, pos, start, said)
         pos = end
         kind = match.lastgroup
         if kind == "quote" and start not in paired:
@@ -185,8 +185,8 @@ def tokenize(text: str) -> list[Word]:
             words.append(Word(read[start:pos], start, pos, lower=";"))   # its text the dash said
         elif kind == "poss":
             words.append(Word("'s", start, pos))
-    if pos != len(text):
-        _spaces_only(read, pos, len(text), said)
+    if pos != len(text) and not read[pos:].isspace():
+        _refuse_between(read, pos, len(text), said)
     return words
 
 
@@ -194,7 +194,7 @@ _READ_AS_ONE_LAST = frozenset(two.split()[-1] for two in READ_AS_ONE)
 """The last words of :data:`~seal_cli.language.english.READ_AS_ONE`: only at one of them is the pair looked up."""
 
 
-def _spaces_only(read: str, start: int, end: int, said: str) -> None:
+def _refuse_between(read: str, start: int, end: int, said: str) -> None:
     """Refuse the first character of ``read[start:end]`` (the text between two tokens) that is no white space, at
     its column (``said``: the command as typed, for the message)."""
     for k in range(start, end):
