@@ -872,8 +872,7 @@ class Evoker:
     def emit(self, frame: Frame, unit: str, clause: Clause, roles: dict[str, Any],
              attached: list[tuple[NP, PP]]) -> None:
         theme = frame.elements[0].role if frame.elements else ""
-        holds_nothing = "instrument" not in frame.roles and not any(
-            not p.negated and len(p.args) == 2 and p.args[0] == theme for p in frame.postconditions)
+        holds_nothing = "instrument" not in frame.roles and self.types.relation(frame) is None
         people = [roles.get(e.role) for e in frame.elements if self.types.is_person(e.type)]
         for host, pp in attached:
             if pp.describes and pp.prep in LOCATED and host.located is None:

@@ -365,6 +365,8 @@ def _without_restarts(words: list[Word]) -> list[Word]:
     pronoun, then a determiner), "turn the lamp on on the desk" (a particle, then a preposition) keep both."""
     lows = [w.lower for w in words]
     opening = [k for k, low in enumerate(lows) if low in _OPENING]
+    if len({lows[k] for k in opening}) == len(opening):
+        return words                            # no word opening a phrase said twice: no restart
     if not any(lows[a] == lows[b] for n, a in enumerate(opening) for b in opening[n + 1:n + 1 + _RUNS[0]]
                if b - a <= _RUNS[0]):
         return words                            # no word opening a phrase said again a run's length on: no restart
@@ -398,6 +400,9 @@ _NEEDING = frozenset(["has", "needs", "wants"])
 _BE_STATED = frozenset(["is", "are", "was", "were", "isn't", "aren't", "wasn't", "weren't"])
 """Forms of "be" after a bare noun that make it a subject ("dinner *is* ready"): no command says "X is"."""
 
+_UNASKED: tuple[str, int, int | None] = ("", 0, None)
+"""What :meth:`State.verb_at` has not been asked yet (no unit is found so: a unit has a word)."""
+
 _GIVEN_TO = frozenset(["me", "him", "her", "them", "us"])
 """Object pronouns that can be the person a thing is given to ("give *him* the keys and then *her* the coat")."""
 
@@ -424,10 +429,11 @@ class State:
 
     def verb_at(self, i: int) -> tuple[str, int, int | None] | None:
         """The lexical unit starting at word ``i`` (memoised: the rules ask more than once)."""
-        if i not in self._verbs:
+        found = self._verbs.get(i, _UNASKED)
+        if found is _UNASKED:
             found = self.lexicon.verb_at(self.words, i, self.clause_end(i + 1))
-            self._verbs[i] = None if found is not None and found[1] == 1 and self.past_subject(i) else found
-        return self._verbs[i]
+            found = self._verbs[i] = None if found is not None and found[1] == 1 and self.past_subject(i) else found
+        return found
 
     def past_subject(self, i: int) -> bool:
         """Whether the word at ``i`` is a past form only (no base form, no -ing form: "drew", "rose") said before a

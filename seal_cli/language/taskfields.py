@@ -235,7 +235,7 @@ def _lp(p: Mapping[str, float], value: str) -> float:
 
 
 def candidates(model: FieldModel, name: str, grams: Sequence[str], reading: Reading, classes: Iterable[str] | None,
-               present: Iterable[str] = ()) -> dict[str, dict[str, float]]:
+               present: Iterable[str] = (), type_p: Mapping[str, float] | None = None) -> dict[str, dict[str, float]]:
     """The values the field ``name`` may take and each one's features, those :func:`combine` weighs by
     :attr:`FieldModel.trust` (a value the model never saw has probability :data:`UNSEEN`):
 
@@ -251,9 +251,10 @@ def candidates(model: FieldModel, name: str, grams: Sequence[str], reading: Read
       receptacle's and the receptacle's models among ``present`` and none, that the field exists as the type says
       (a stack has a movable receptacle, a look no receptacle): the fields decoded jointly, softly.
 
-    ``classes``: the classes a class field may take (None for the type)."""
+    ``classes``: the classes a class field may take (None for the type); ``type_p``: the type's
+    ``model.probabilities("type", grams)``, when the caller has them already (:func:`combine`)."""
     if name == "type":
-        p = model.probabilities("type", grams)
+        p = model.probabilities("type", grams) if type_p is None else type_p
         said = reading.type
     else:
         keep = set(classes or ())
@@ -315,8 +316,8 @@ def combine(model: FieldModel, grams: Sequence[str], reading: Reading, present: 
     those its phrase's words can mean); and the type's probability."""
     present = set(present)
     trust = model.trust
-    options = candidates(model, "type", grams, reading, None, present)
     p = model.probabilities("type", grams)
+    options = candidates(model, "type", grams, reading, None, present, p)
     kind = _best(options, reading.type, trust, p)
     out = _fields(model, grams, reading, present, meant, kind[0] if kind else (reading.type or SIMPLE))
     if kind and out["type"] == STACK and out["mrecep"] == out["object"] and len(options) > 1:

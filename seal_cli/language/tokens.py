@@ -66,11 +66,7 @@ class Word:
         _end(self, end)
         _tag(self, tag)
         _info(self, info)
-        if lower is None:
-            lower = text.lower()
-            lower = lower.replace("’", "'") if "’" in lower else lower
-            lower = SPELLINGS.get(lower, lower)         # "pls": "please"
-        _lower(self, lower)
+        _lower(self, read_word(text) if lower is None else lower)
 
     def tagged(self, tag: str, info: object = None) -> Word:
         """The same span with another tag (its text read afresh)."""
@@ -78,6 +74,26 @@ class Word:
 
     def __repr__(self) -> str:
         return f"Word({self.text!r}, {self.start}, {self.end}, {str(self.tag)!r})"
+
+
+def read_word(text: str) -> str:
+    """A word's text as read: lower case, the typographic apostrophe plain, a known spelling normalised ("pls":
+    "please"). Remembered by text (:data:`READ_KEPT` of them): every word is made again when it is tagged, and a
+    command's words are mostly the few hundred every command says."""
+    lower = _READ.get(text)
+    if lower is None:
+        lower = text.lower()
+        lower = lower.replace("’", "'") if "’" in lower else lower
+        lower = SPELLINGS.get(lower, lower)
+        if len(_READ) >= READ_KEPT:
+            _READ.clear()
+        _READ[text] = lower
+    return lower
+
+
+READ_KEPT = 65536
+"""How many texts :func:`read_word` remembers before it starts again."""
+_READ: dict[str, str] = {}
 
 
 _text, _start, _end, _tag, _info, _lower = (getattr(Word, name).__set__ for name in
@@ -93,8 +109,8 @@ _TOKEN = re.compile(r"""
   | (?P<dash>[—–]|-+>|=>|-{2,}|(?<=\s)-(?=\s))            # a dash (or "->") between clauses reads as ";"
   | (?P<punct>[,;:.!?]+)
   | (?P<quote>["“”'‘’`()\[\]])                             # quotes and brackets are ignored
-  | (?P<space>\s+)
 """, re.VERBOSE)
+"""A token; what lies between two is white space, else no token of the command (:func:`_refuse_between`)."""
 _CONTROL = re.compile(r"[\x00-\x08\x0b-\x1f\x7f-\x9f]")
 _SURROGATE = re.compile("[\ud800-\udfff]")
 """What Python makes of a byte of the command line that is not UTF-8 (U+DC80 to U+DCFF: ``surrogateescape``), or any
@@ -125,12 +141,12 @@ def tokenize(text: str) -> list[Word]:
     pos = 0
     for match in _TOKEN.finditer(read):
         start, end = match.span()
-        if start != pos:
-            raise CommandError(_unexpected(said[pos]), pos + 1, said, ["a word"])
+        if start != pos and not read[pos:start].isspace():
+            _refuse_between(read, pos, start, said)
         pos = end
         kind = match.lastgroup
-        if kind == "space" or kind == "quote" and start not in paired:
-            continue                    # as many spaces as words: the commonest token first
+        if kind == "quote" and start not in paired:
+            continue
         if kind == "quote":             # a bracket of a pair: the aside it holds (``statements.BRACKETED``)
             words.append(Word(read[start], start, pos))
             continue
@@ -139,19 +155,20 @@ def tokenize(text: str) -> list[Word]:
             if not typed.isascii():
                 _check_whole_numbers(typed, start, said)
                 _check_one_alphabet(typed, start, said)
-            two = RUN_TOGETHER.get(typed.lower()) if len(typed) == 5 else None     # all five letters
+            low = typed.lower()
+            two = RUN_TOGETHER.get(low) if len(typed) == 5 else None     # all five letters
             if two is not None:                                  # "gimme": "give" and "me", each its letters
                 cut = start + len(two[2])
                 words.append(Word(text[start:cut], start, cut, lower=two[0]))
                 words.append(Word(text[cut:end], cut, end, lower=two[1]))
                 continue
-            one = READ_AS_ONE.get(f"{words[-1].lower} {typed.lower()}") if words and words[-1].end < start \
-                else None
+            one = READ_AS_ONE.get(f"{words[-1].lower} {low}") if low in _READ_AS_ONE_LAST and words and \
+                words[-1].end < start else None
             if one is not None:                                  # "prior to": "before", one word of both
                 first = words.pop()
                 words.append(Word(text[first.start:pos], first.start, pos, lower=one))
                 continue
-            slip = function_word(typed.lower()) if typed.isalpha() and (typed.islower() or typed[1:].islower() and (
+            slip = function_word(low) if typed.isalpha() and (typed.islower() or typed[1:].islower() and (
                 not words or words[-1].lower in END_MARKS)) else None
             words.append(Word(typed, start, pos, lower=slip))    # "wher": "where" (slips.function_word)
         elif kind == "punct" and match.group() == "." and words and words[-1].end == start and \
@@ -168,9 +185,21 @@ def tokenize(text: str) -> list[Word]:
             words.append(Word(read[start:pos], start, pos, lower=";"))   # its text the dash said
         elif kind == "poss":
             words.append(Word("'s", start, pos))
-    if pos != len(text):
-        raise CommandError(_unexpected(said[pos]), pos + 1, said, ["a word"])
+    if pos != len(text) and not read[pos:].isspace():
+        _refuse_between(read, pos, len(text), said)
     return words
+
+
+_READ_AS_ONE_LAST = frozenset(two.split()[-1] for two in READ_AS_ONE)
+"""The last words of :data:`~seal_cli.language.english.READ_AS_ONE`: only at one of them is the pair looked up."""
+
+
+def _refuse_between(read: str, start: int, end: int, said: str) -> None:
+    """Refuse the first character of ``read[start:end]`` (the text between two tokens) that is no white space, at
+    its column (``said``: the command as typed, for the message)."""
+    for k in range(start, end):
+        if not read[k].isspace():
+            raise CommandError(_unexpected(said[k]), k + 1, said, ["a word"])
 
 
 _MARKER = re.compile(r"""
@@ -350,7 +379,7 @@ def _title_before_name(text: str, pos: int, written: bool = True) -> bool:
 def capitalised(word: Word) -> bool:
     """Whether a word is written with a capital and then lower case ("Robin"; not "TV")."""
     text = word.text
-    return text[:1].isupper() and any(c.islower() for c in text[1:])
+    return text[:1].isupper() and (text[1:2].islower() or any(c.islower() for c in text[2:]))
 
 
 def printable(text: str) -> str:

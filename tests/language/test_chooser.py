@@ -97,3 +97,29 @@ def test_the_weights_decide_against_the_counts_prior(library: Library) -> None:
     assert sink.frames[-1].elements["theme"].cls == "Cup"
     factor = usage.sentence_factor("cup", ("cup",), ["cup", "mug"], {"coffee"})
     assert math.isclose(factor["mug"] / factor["cup"], math.exp(2.0))
+
+
+def _logits_row_by_row(weights: dict[str, dict[str, float]], keys: list[str], feats: list[str]) -> dict[str, float]:
+    """``logits`` as it was written before perf46: each feature's row added to every key in turn."""
+    out = dict.fromkeys(keys, 0.0)
+    for f in feats:
+        row = weights.get(f)
+        if row:
+            for key in out:
+                out[key] += row.get(key, 0.0)
+    return out
+
+
+def test_logits_are_the_same_sums_taken_key_by_key() -> None:
+    import random
+
+    rng = random.Random(46)
+    classes = [f"c{k}" for k in range(30)]
+    weights = {f"f{j}": {c: rng.uniform(-3, 3) for c in rng.sample(classes, rng.randint(0, 12))} for j in range(60)}
+    for _ in range(300):
+        keys = rng.sample(classes, rng.randint(0, 12))
+        feats = [f"f{rng.randrange(80)}" for _ in range(rng.randint(0, 20))]       # some unknown, some twice
+        found = logits(weights, keys, feats)
+        assert found == _logits_row_by_row(weights, keys, feats)                      # equal floats, not close ones
+        assert list(found) == list(dict.fromkeys(keys))
+    assert logits(weights, ["c1", "c1"], []) == {"c1": 0.0}

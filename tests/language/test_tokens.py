@@ -126,3 +126,25 @@ def test_two_words_of_one_preposition_are_one_word_read_as_it(text: str, said: s
 
 def test_prior_alone_is_a_word_of_its_own() -> None:
     assert [w.lower for w in tokenize("the prior owner to")] == ["the", "prior", "owner", "to"]
+
+
+@pytest.mark.parametrize("text", ["bring me\u00a0the cup", "bring\tme  the cup ", " \u2003bring me the cup\n"])
+def test_white_space_of_any_kind_between_words_is_no_word(text: str) -> None:
+    assert [w.text for w in tokenize(text)] == ["bring", "me", "the", "cup"]
+
+
+@pytest.mark.parametrize(("text", "column"), [("bring me   # the cup", 12), ("bring me the cup  ~", 19),
+                                              ("bring me\u00a0\u00a0§ cup", 11), ("~ bring it", 1)])
+def test_a_character_of_no_word_is_refused_at_its_own_column_after_white_space(text: str, column: int) -> None:
+    with pytest.raises(CommandError, match="unexpected character") as caught:
+        tokenize(text)
+    assert caught.value.column == column
+
+
+def test_a_word_is_read_alike_however_often_it_is_made() -> None:
+    from seal_cli.language import tokens
+
+    first = [(w.text, w.lower) for w in tokenize("Pls bring Me the Cup’s lid")]
+    tokens._READ.clear()
+    assert [(w.text, w.lower) for w in tokenize("Pls bring Me the Cup’s lid")] == first
+    assert first[0] == ("Pls", "please") and tokens.read_word("Pls") == "please" and tokens.read_word("ME") == "me"

@@ -165,8 +165,8 @@ def _follow_asked_at(s: State, i: int) -> int:
             return k
         if low == "to":
             return 0                                              # "ask Anna to bring ...": something else asked
-        if not low.isalpha() and "'" not in low or low in END_MARKS or s.verb_at(k) is not None and k == i:
-            return 0
+        if not low.isalpha() and "'" not in low or low in END_MARKS or k == i and s.verb_at(k) is not None:
+            return 0                                              # (a verb only where the person would start)
         person = person or capitalised(words[k]) or low in PERSON_PRONOUNS or low == "them" or \
             low in s.lexicon.people or noun_lemma(low) in s.lexicon.people
     return 0
