@@ -520,7 +520,7 @@ FOLLOW_ASKED = ("guide", frozenset(["ask", "tell", "get", "invite"]),
 """A person asked to follow the robot ("*ask* Anna *to follow you* to the kitchen", "tell the man in the hat to come
 with you"): the robot leads them, the unit ``FOLLOW_ASKED[0]`` (words42: it was a Tell of "follow you to the
 kitchen", nobody led). The verbs of asking, and what the person is asked."""
-FOUND_STATED = frozenset(["you'll find", "you will find", "you can find", "you should find", "you'll see",
+FOUND_STATED = frozenset(["you'll find", "you will find", "you can find", "you should find", "you'd find", "you'll see",
                           "you will see", "you'll spot", "you will spot"])
 """"*You'll find* Axel by the bookshelf, lead him to the kitchen": where the hearer will come upon someone or something
 is a statement of where they are, as "Axel is by the bookshelf" is, when a comma and a command follow it (words46:
@@ -636,11 +636,6 @@ OBJECT_PARTICLES = frozenset(["off", "up", "down", "out"])
 DEPARTING = frozenset(["out", "away", "off"])
 """Particles that make a verb of going a leaving ("before you go *out*", "when you head *off*"): with nothing after
 them the going is the time of the command, no frame (words36)."""
-FOUND_THERE = frozenset(["you'll find", "you will find", "you can find", "you should find", "you'd find",
-                         "you'll see", "you will see"])
-""""*At the pantry you'll find* some crisps, bring them to Sam": what the robot will find at a place said first is
-said to be there, as "at the pantry there are some crisps" says — a statement beside the command naming where the
-thing is (words47: a Find before the Bring, the place read as "the pantry you'll")."""
 STATE_PARTICLES = frozenset(["on", "off", "open", "shut"])
 """Words that end a question of state though lemminflect lists them as no adjective ("is the TV *on*?")."""
 KEEPING = frozenset(["keep"])

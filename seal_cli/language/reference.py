@@ -22,7 +22,7 @@ from seal_cli.frames.model import Frame
 from seal_cli.language.element_types import Types
 from seal_cli.language.english import (
     BESIDE,
-    FOUND_THERE,
+    FOUND_STATED,
     LOCATED,
     MODALS,
     NP_OPENERS,
@@ -359,7 +359,7 @@ class Reference:
         between = self.text[m.end:said.start].lower().replace("'s", " 's").split()
         if between[1:2] and between[1] in MODALS and between[2:3] == ["be"]:
             between = between[:1] + between[2:]              # "in the garage there *should be* a ladder" (words46)
-        found = " ".join(between).replace(" 's", "'s") in FOUND_THERE     # "... *you'll find* some crisps" (words47)
+        found = " ".join(between).replace(" 's", "'s") in FOUND_STATED     # "... *you'll find* some crisps" (words47)
         there_is = between[:1] == ["there"] and between[1:2] != [] and \
             between[1] in ("is", "are", "'s", "was", "were", "be")
         if not opening or " ".join(opening) not in (*LOCATED, *BESIDE) or not found and not there_is:

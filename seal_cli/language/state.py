@@ -27,7 +27,6 @@ from seal_cli.language.english import (
     END_MARKS,
     FILLERS,
     FINITE,
-    FOUND_THERE,
     FREE_RELATIVES,
     FREQUENCY_ADVERBS,
     HERE_WORDS,
@@ -842,31 +841,12 @@ class State:
         for k in range(i + n + 1, len(words) - 1):
             low = words[k].lower
             if low == "there" and (words[k + 1].lower in BE_WORDS or words[k + 1].lower in MODALS and
-                                   k + 2 < len(words) and words[k + 2].lower == "be") \
-                    or longest_phrase(words, k, FOUND_THERE):
-                # "in the kitchen there *should be* someone" (words46); "... *you'll find* some crisps" (words47)
-                return k
+                                   k + 2 < len(words) and words[k + 2].lower == "be"):
+                return k                          # "in the kitchen there *should be* someone" (words46)
             if not low.isalpha() or low in END_MARKS or self.verb_at(k) is not None and \
                     words[k - 1].lower not in NP_OPENERS:
                 return 0                          # "in the *study* there are three mugs": a noun (words26)
         return 0
-
-    def found_there(self, i: int) -> bool:
-        """Whether the sentence at ``i`` says what the robot will find at a place said first, then a comma ("*at the
-        pantry you'll find some crisps*, bring them to Sam": ``english.FOUND_THERE``, a statement; words47)."""
-        there = self._there_after_place(i)
-        found = longest_phrase(self.words, there, FOUND_THERE) if there else 0
-        return bool(found) and bool(self._found_said(there + found))
-
-    def _found_said(self, k: int) -> int:
-        """Where the phrase of what is found, at ``k``, ends before a comma ("you'll find *some crisps*, bring them"),
-        no verb in it (0: none)."""
-        words = self.words
-        if not self.np_starts(k):
-            return 0
-        end = next((j for j in range(k + 1, len(words)) if words[j].lower in (",", ";") or words[j].lower in END_MARKS
-                    or self.verb_at(j) is not None and words[j - 1].lower not in NP_OPENERS), 0)
-        return end if end and words[end].lower in (",", ";") else 0
 
     def aside(self, i: int) -> Match | None:
         """A sentence said beside the command, with no verb of the library, at the start of a sentence
@@ -883,8 +863,7 @@ class State:
             return None                                  # inside a sentence
         there = self._there_after_place(i)
         if there:
-            found = longest_phrase(words, there, FOUND_THERE)
-            stated = self._found_said(there + found) if found else self.statement_at(there)
+            stated = self.statement_at(there)
             if stated and stated < len(words) and words[stated].lower in (",", ";") and self.verb_after(stated + 1):
                 return self._aside(i, stated + 1 - i, (words[i].start, words[stated - 1].end))
                 # "on the sofa there's a blanket, bring it to me": the place said first is the statement's (words24)

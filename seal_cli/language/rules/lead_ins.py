@@ -391,8 +391,7 @@ def _watching(s: State, i: int) -> Match | None:
 
 def _polite_frame(s: State, i: int) -> Match | None:
     words = s.words
-    if not all(t.tag == Tag.POLITE for t in s.out) or s.verb_at(i) is not None or words[i].lower in QUESTION_WORDS \
-            or s.found_there(i):        # "in the hall *you will* find a box, ...": where the box is (words47)
+    if not all(t.tag == Tag.POLITE for t in s.out) or s.verb_at(i) is not None or words[i].lower in QUESTION_WORDS:
         return None                     # "what's the thinnest thing *you can* find on the shelf?": a question (words41)
     for j in range(i, min(len(words) - 2, i + 12)):  # "It would be great if you could close ..."
         if words[j].lower in (",", ";") or words[j].lower in END_MARKS:

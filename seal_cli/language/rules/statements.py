@@ -185,7 +185,6 @@ ASIDE = Rule("sentence beside the command", _aside, (
     Example("Bogdan has a question; answer it for him", "Bogdan has a question;", Tag.POLITE),
     Example("see the man by the window? greet him", "see the man by the window?", Tag.POLITE),
     Example("on the sofa there's a blanket, bring it to me", "on the sofa there's a blanket,", Tag.POLITE),
-    Example("in the hall you will find a box, bring it to me", "in the hall you will find a box,", Tag.POLITE),
 ), None, "a greeting, a statement with no verb of the library, or 'see X?', where a command should start")
 QUESTION_ASKER = Rule("whose question, asked", _question_asker, (
     Example("answer whatever the man at the door asks you", "", Tag.OF),
