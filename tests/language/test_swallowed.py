@@ -122,16 +122,18 @@ def test_the_command_line_reports_a_refused_one_as_an_error_object(library: Libr
     assert error["column"] == text.index("handing") + 1 and "'handing' is a verb inside the source" in error["message"]
 
 
-@pytest.mark.parametrize(("text", "verb"), [
-    ("go to the kitchen and sit there", "sit"),
-    ("take the cup and dance", "dance"),
-    ("grab the towel, and kneel down", "kneel"),
-    ("go to the door and knock", "knock"),
+@pytest.mark.parametrize(("text", "verb", "says"), [
+    # "sit" is a verb of the library (Place's "sit the vase on ..."), said with no object (hostile31's message)
+    ("go to the kitchen and sit there", "sit", "'sit' is read here as a thing, not as the library's verb 'sit'"),
+    ("take the cup and dance", "dance", "unknown verb 'dance'"),
+    ("grab the towel, and kneel down", "kneel", "unknown verb 'kneel'"),
+    ("go to the door and knock", "knock", "unknown verb 'knock'"),
 ])
-def test_a_verb_after_and_is_a_clause_and_its_unknown_verb_an_error(library: Library, text: str, verb: str) -> None:
+def test_a_verb_after_and_is_a_clause_and_its_unknown_verb_an_error(
+        library: Library, text: str, verb: str, says: str) -> None:
     with pytest.raises(CommandError) as raised:
         parse_command(text, library)
-    assert f"unknown verb {verb!r}" in raised.value.message and raised.value.column == text.index(verb) + 1
+    assert says in raised.value.message and raised.value.column == text.index(verb) + 1
 
 
 def test_wait_after_and_is_a_wait_there_the_place_before(library: Library) -> None:
