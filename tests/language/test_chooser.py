@@ -11,6 +11,7 @@ from seal_cli.language.chooser import Instance, features, fit, logits, room_weig
 from seal_cli.language.grounding import Vocabulary
 from seal_cli.language.parser import parse_command
 from seal_cli.language.wordusage import WordUsage
+from tests.language.test_parse_caches import plain_logits
 
 
 def test_features_are_the_other_words_and_the_modifiers_but_no_candidate_s_name() -> None:
@@ -99,17 +100,6 @@ def test_the_weights_decide_against_the_counts_prior(library: Library) -> None:
     assert math.isclose(factor["mug"] / factor["cup"], math.exp(2.0))
 
 
-def _logits_row_by_row(weights: dict[str, dict[str, float]], keys: list[str], feats: list[str]) -> dict[str, float]:
-    """``logits`` as it was written before perf46: each feature's row added to every key in turn."""
-    out = dict.fromkeys(keys, 0.0)
-    for f in feats:
-        row = weights.get(f)
-        if row:
-            for key in out:
-                out[key] += row.get(key, 0.0)
-    return out
-
-
 def test_logits_are_the_same_sums_taken_key_by_key() -> None:
     import random
 
@@ -120,6 +110,6 @@ def test_logits_are_the_same_sums_taken_key_by_key() -> None:
         keys = rng.sample(classes, rng.randint(0, 12))
         feats = [f"f{rng.randrange(80)}" for _ in range(rng.randint(0, 20))]       # some unknown, some twice
         found = logits(weights, keys, feats)
-        assert found == _logits_row_by_row(weights, keys, feats)                      # equal floats, not close ones
+        assert found == plain_logits(weights, keys, feats)                      # equal floats, not close ones
         assert list(found) == list(dict.fromkeys(keys))
     assert logits(weights, ["c1", "c1"], []) == {"c1": 0.0}

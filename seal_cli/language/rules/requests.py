@@ -10,6 +10,8 @@ left unsaid (its ``text`` is empty).
 
 from __future__ import annotations
 
+from collections.abc import Sequence
+
 from seal_cli.language.asking import person_subject
 from seal_cli.language.english import (
     ASKED_ALONE,
@@ -184,15 +186,22 @@ def _where_did(s: State, i: int) -> Match | None:
                  expect=False, verb=WHERE_MEANS, using=False)
 
 
+def _past_openers(words: Sequence[Word], k: int) -> int | None:
+    """Where the words after a noun phrase's determiners or possessives at ``k`` start ("where did *the* kids ...",
+    "*our* dog"); None when no opener is said at ``k``."""
+    j = k
+    while j < len(words) and words[j].lower in NP_OPENERS:
+        j += 1
+    return j if j > k else None
+
+
 def _person_said(s: State, k: int) -> int | None:
     """Where a noun phrase of people at ``k`` that opens with a determiner or a possessive ends ("where did *the kids*
     leave the ball?", "where does *my little brother* keep his shoes"): after a few words, a noun the taxonomy lists
     as a person; None when the phrase names no person ("where did the cat ...")."""
     words = s.words
-    j = k
-    while j < len(words) and words[j].lower in NP_OPENERS:
-        j += 1
-    if j == k:
+    j = _past_openers(words, k)
+    if j is None:
         return None
     for h in range(j, min(j + 3, len(words))):
         low = words[h].lower
@@ -209,10 +218,8 @@ def _subject_said(s: State, k: int) -> int | None:
     Find of the cat and a Place of the ball, or refused at the verb): the verb's index, when the word after one to
     three words of the phrase is a verb's base form or participle with a phrase after it; None otherwise."""
     words = s.words
-    j = k
-    while j < len(words) and words[j].lower in NP_OPENERS:
-        j += 1
-    if j == k:
+    j = _past_openers(words, k)
+    if j is None:
         return None
     for h in range(j, min(j + 3, len(words) - 2)):
         low = words[h].lower
