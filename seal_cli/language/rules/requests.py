@@ -2259,7 +2259,8 @@ WISH_OF_DESCRIBED = Rule("a wish said of a person described", _wish_of_described
     Example("Robin, who is in the garage, needs a wrench", "Robin", Tag.NAME),
     Example("Sam in the study would like a coffee", "Sam", Tag.NAME),
     Example("dad, who's in the shed, wants his gloves", "dad", Tag.NAME),
-), None, "'Robin, who is in the garage, needs X', 'Sam in the study wants X': bring X to the person")
+), None, "'Robin, who is in the garage, needs X', 'Sam in the study wants X': bring X to the person",
+   needs=frozenset(wish[0] for wish in (*_WISHES_OF, ("want",), ("need",))))     # the words _wish_at reads
 WISH_DROPPED = Rule("the wish after a person's phrase", _wish_dropped, (
     Example("the person at the armchair needs a towel", "needs", ""),
     Example("Robin, who is in the garage, needs a wrench", ", needs", ""),
