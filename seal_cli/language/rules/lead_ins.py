@@ -591,4 +591,5 @@ POLITE_FRAME = Rule("if you could", _polite_frame, (
     Example("I think you should follow her", "I think you should", Tag.POLITE),
     Example("I suppose you need to wash the cup", "I suppose you need to", Tag.POLITE),
     Example("it would be kind of you to open the gate", "it would be kind of you to", Tag.POLITE),
-), None, "a polite frame ending in 'you could' before the verb", after=frozenset([START, Tag.POLITE]))
+), None, "a polite frame ending in 'you could' before the verb", after=frozenset([START, Tag.POLITE]),
+   needs=frozenset(["you", "you'd", "u'd"]))      # the subjects it returns at (itself and _you_would)
