@@ -505,11 +505,14 @@ class Tagger(State):
     names of the rules that matched, in order, are appended to it."""
 
     def __init__(self, lexicon: Lexicon, words: list[Word], text: str = "",
-                 trace: list[str] | None = None) -> None:
+                 trace: list[str] | None = None, sift: bool = True) -> None:
         words, aside = set_aside(lexicon, words)     # "(any drink is fine)": a remark, before any rule reads on
         super().__init__(lexicon, words, text)
         self.remarks.extend(aside)
         self.trace = trace
+        self.unsaid = _GATES.unsaid(self.words) if sift else 0
+        """The rules whose ``needs`` this command does not say (:meth:`Gates.unsaid`), never asked here; ``sift``
+        False asks them (a test: the same rules fire either way)."""
 
     def run(self) -> list[Word]:
         words = self.words
@@ -538,9 +541,9 @@ class Tagger(State):
         words at ``i``, applied; rules that only retag the last word are applied on the way."""
         out = self.out
         after = out[-1].tag if out else START
-        gated = _KNOWN.get((low, after))
+        gated = _KNOWN.get((low, after, self.unsaid))
         if gated is None:
-            gated = _GATES.rules(low, after)
+            gated = _GATES.rules(low, after, self.unsaid)
         return self.first_of(gated[table], table, low, i, after)
 
     def first_of(self, rules: tuple[Rule, ...], table: int, low: str, i: int, after: str) -> Match | None:
@@ -559,7 +562,7 @@ class Tagger(State):
                 return found
             retagged = out[-1].tag if out else START
             if retagged != after:
-                return self.first_of(_GATES.rest(table, low, retagged, rule), table, low, i, retagged)
+                return self.first_of(_GATES.rest(table, low, retagged, rule, self.unsaid), table, low, i, retagged)
         return None
 
     def apply(self, found: Match, i: int) -> None:
@@ -587,37 +590,58 @@ class Tagger(State):
 
 
 class Gates:
-    """The rules of each table that may match a word, by the word's lower-case form and the tag of the last tagged
-    word (each rule's ``first`` and ``after`` gates, asked once per form and tag, the answer kept here): an index
-    derived from the rules themselves, so a new rule is in it as soon as it is in its table."""
+    """The rules of each table that may match a word, by the word's lower-case form, the tag of the last tagged word
+    and the rules the command leaves out (each rule's ``first`` and ``after`` gates, asked once per form and tag, and
+    its ``needs``, asked once per command; the answer kept here): an index derived from the rules themselves, so a
+    new rule is in it as soon as it is in its table."""
 
     FORMS = 100_000
-    """How many (word form, tag) pairs are kept before the cache starts again."""
+    """How many (word form, tag, rules left out) keys are kept before the cache starts again."""
 
     def __init__(self, tables: tuple[tuple[Rule, ...], ...]) -> None:
         self.tables = tables
-        self.known: dict[tuple[str, str], tuple[tuple[Rule, ...], ...]] = {}
-        """What :meth:`rules` has answered, by (word form, tag): the tagger reads it first."""
+        self.known: dict[tuple[str, str, int], tuple[tuple[Rule, ...], ...]] = {}
+        """What :meth:`rules` has answered, by (word form, tag, :meth:`unsaid`): the tagger reads it first."""
         self._position = [{id(rule): k for k, rule in enumerate(table)} for table in tables]
+        needs = list(dict.fromkeys(rule.needs for table in tables for rule in table if rule.needs is not None))
+        self._needs = tuple((1 << k, words) for k, words in enumerate(needs))
+        """Each distinct ``needs`` of the rules, and its bit in :meth:`unsaid`'s mask."""
+        self._bit = {id(rule): 1 << needs.index(rule.needs) for table in tables for rule in table
+                     if rule.needs is not None}
 
-    def rules(self, low: str, after: str) -> tuple[tuple[Rule, ...], ...]:
+    def unsaid(self, words: Sequence[Word]) -> int:
+        """The rules a command of ``words`` leaves out, as a mask of the bits of their ``needs``: those none of whose
+        needed words it says (0: none left out)."""
+        said = {w.lower for w in words}
+        mask = 0
+        for bit, needed in self._needs:
+            if needed.isdisjoint(said):
+                mask |= bit
+        return mask
+
+    def rules(self, low: str, after: str, unsaid: int = 0) -> tuple[tuple[Rule, ...], ...]:
         """For each table, its rules, in order, that may match a word read as ``low`` after a word tagged
-        ``after`` (``START``: the first)."""
-        key = (low, after)
+        ``after`` (``START``: the first) in a command that leaves out the rules of mask ``unsaid``."""
+        key = (low, after, unsaid)
         rules = self.known.get(key)
         if rules is None:
+            if unsaid:
+                bit = self._bit
+                rules = tuple(tuple(r for r in table if not unsaid & bit.get(id(r), 0))
+                              for table in self.rules(low, after))
+            else:
+                rules = tuple(tuple(r for r in table if r.admits(low) and r.follows(after)) for table in self.tables)
             if len(self.known) >= self.FORMS:
                 self.known.clear()
-            rules = self.known[key] = tuple(tuple(r for r in table if r.admits(low) and r.follows(after))
-                                               for table in self.tables)
+            self.known[key] = rules
         return rules
 
-    def rest(self, table: int, low: str, after: str, rule: Rule) -> tuple[Rule, ...]:
+    def rest(self, table: int, low: str, after: str, rule: Rule, unsaid: int = 0) -> tuple[Rule, ...]:
         """The rules of table ``table`` after ``rule`` that may match a word read as ``low`` after a word tagged
-        ``after`` (where a rule has just retagged the last word)."""
+        ``after`` (where a rule has just retagged the last word), the rules of mask ``unsaid`` left out."""
         position = self._position[table]
         here = position[id(rule)]
-        return tuple(r for r in self.rules(low, after)[table] if position[id(r)] > here)
+        return tuple(r for r in self.rules(low, after, unsaid)[table] if position[id(r)] > here)
 
 
 _GATES = Gates((ANYWHERE, CLAUSE_START, INSIDE, WORDS))

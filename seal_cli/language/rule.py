@@ -76,6 +76,7 @@ class Rule:
     first: frozenset[str] | Callable[[str], bool] | None = None
     doc: str = ""
     after: frozenset[str] | None = None
+    needs: frozenset[str] | None = None
 
     def admits(self, low: str) -> bool:
         """Whether the rule may match a word read as ``low`` (its gate; asked once per word form)."""

@@ -73,9 +73,9 @@ def plain_longest_phrase(words: Sequence[Word], i: int, table: frozenset[str]) -
 
 class PlainGates(lexicon.Gates):
     """The rules' ``first`` gates asked at every word, nothing remembered, and no index by the last tag (each
-    rule's ``after`` gate is left out: the rule is asked after any tag, as before perf30)."""
+    rule's ``after`` gate is left out: the rule is asked after any tag, as before perf30; nor its ``needs``, perf47)."""
 
-    def rules(self, low: str, after: str) -> tuple[tuple[Any, ...], ...]:
+    def rules(self, low: str, after: str, unsaid: int = 0) -> tuple[tuple[Any, ...], ...]:
         return tuple(tuple(r for r in table if r.admits(low)) for table in self.tables)
 
 

@@ -522,7 +522,8 @@ TIME_SAID_FIRST = Rule("a time said first", _time_first, (
 ROOM_HEADING = Rule("a room said as a heading", _room_heading, (
     Example("Garage: fetch the drill", "Garage", Tag.WORD),
     Example("the hallway - count the boxes", "hallway", Tag.WORD),
-), None, "a room alone and a colon, dash or stop before the command: where it is done ('in the garage, ...')")
+), None, "a room alone and a colon, dash or stop before the command: where it is done ('in the garage, ...')",
+   needs=_HEADING_MARKS)
 REASON_FIRST = Rule("a reason said first", _reason_first, (
     Example("Since you're in the shed anyway, grab the rake", "rake", Tag.WORD),
     Example("now that Sam is here, open the gate", "gate", Tag.WORD),
@@ -590,4 +591,5 @@ POLITE_FRAME = Rule("if you could", _polite_frame, (
     Example("I think you should follow her", "I think you should", Tag.POLITE),
     Example("I suppose you need to wash the cup", "I suppose you need to", Tag.POLITE),
     Example("it would be kind of you to open the gate", "it would be kind of you to", Tag.POLITE),
-), None, "a polite frame ending in 'you could' before the verb", after=frozenset([START, Tag.POLITE]))
+), None, "a polite frame ending in 'you could' before the verb", after=frozenset([START, Tag.POLITE]),
+   needs=frozenset(["you", "you'd", "u'd"]))      # the subjects it returns at (itself and _you_would)

@@ -209,7 +209,8 @@ MULTIPLIED = Rule("number times a multiplier", _multiplied, (
     Example("put 3 thousand cups in the sink", "3 thousand", Tag.NUM),
     Example("bring me hundreds of apples", "hundreds of", Tag.NUM),
 ), lambda low: low.isdigit() or low in _NUMBER_FIRST or low in ("a", "an") or low in _MULTIPLES,
-    "a count and a multiplier after it ('dozen', 'hundred', 'million'): their product")
+    "a count and a multiplier after it ('dozen', 'hundred', 'million'): their product",
+    needs=frozenset(MULTIPLIERS) | frozenset(_MULTIPLES))
 PAST_TWELVE = Rule("number word past twelve", _past_twelve, (
     Example("bring me twenty apples", "twenty", Tag.NUM),
     Example("put forty-two cups in the sink", "forty-two", Tag.NUM),

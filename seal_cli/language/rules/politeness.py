@@ -528,7 +528,7 @@ RELAYED = Rule("a request passed on", _relayed, (
     Example("Omar asked you to fetch him a towel", "Omar asked you to", Tag.POLITE),
     Example("my brother wants you to open the garage", "my brother wants you to", Tag.POLITE),
 ), None, "'X says you have to V', 'X asked you to V': the request passed on is the command, X's words a remark",
-   after=frozenset([START, Tag.POLITE]))
+   after=frozenset([START, Tag.POLITE]), needs=frozenset(["you"]))
 LIKE_FILLER = Rule("like as a filler", _like_filler, (
     Example("could you like pass me the salt", "like", ""),
 ), frozenset(["like"]), "'like' after politeness and before the verb: a filler")

@@ -195,7 +195,8 @@ STATE_TAGGED = Rule("a state said, then its tag", _state_tagged, (
     Example("the heater's off, isn't it?", "off", Tag.COND),
     Example("the garage door is shut?", "shut", Tag.COND),
     Example("the radio, it is on or off?", "on or off", Tag.COND),
-), None, "'X is locked, isn't it?', 'X is locked?': the question 'is X locked?' (LookAt, the state asked kept)")
+), None, "'X is locked, isn't it?', 'X is locked?': the question 'is X locked?' (LookAt, the state asked kept)",
+   needs=_STATE_BE)
 DONE_ASKED = Rule("whether the robot did it", _done_asked, (
     Example("did you close the garage door?", "did you close", Tag.VERB),
     Example("you've turned off the oven, haven't you?", "you've turned off", Tag.VERB),

@@ -2128,7 +2128,8 @@ LEFT_ASKED_RULE = Rule("did someone leave X in a state", _left_asked, (
     Example("did I leave the stove on", "did I leave", Tag.VERB),
     Example("Has anyone left the back door open?", "open", Tag.COND),
     Example("did I leave my keys in the car?", "did I leave", Tag.VERB),
-), LEFT_ASKED[0], "'did I leave X on?': check X (LookAt), the state asked kept; 'did I leave X in Y?': find X in Y")
+), LEFT_ASKED[0], "'did I leave X on?': check X (LookAt), the state asked kept; 'did I leave X in Y?': find X in Y",
+   needs=LEFT_ASKED[2])
 WHETHER_IS_RULE = Rule("is X somewhere", _whether_is, (
     Example("Is Ben in the kitchen?", "Is", Tag.VERB),
     Example("is anybody upstairs?", "is", Tag.VERB),
@@ -2177,7 +2178,8 @@ RESULTATIVE = Rule("a thing left in a state", _resultative, (
 SWITCHED_BY_UNKNOWN = Rule("an unknown verb of a thing and on/off", _switched_by_unknown, (
     Example("flick the light on in the bedroom", "flick", Tag.VERB),
     Example("knock the telly off", "knock", Tag.VERB),
-), lambda low: low.isalpha(), "'flick the light on': a verb no frame lists, a thing and 'on'/'off': switch it so")
+), lambda low: low.isalpha(), "'flick the light on': a verb no frame lists, a thing and 'on'/'off': switch it so",
+   needs=frozenset(SWITCHED_MEANS))
 OBLIGED_AFTER_COMMA = Rule("a comma before where a thing should go", _obliged_after_comma, (
     Example("put the mugs in the sink, the clean ones go in the cupboard", ",", Tag.SEP),
 ), frozenset([",", ";"]), "', the plates go in the dishwasher': a clause of its own after the comma")
@@ -2196,7 +2198,8 @@ PERSON_NEEDING = Rule("a person who needs leading", _person_needing, (
     Example("the man at the door needs showing to the kitchen", "the", Tag.DET),
     Example("noah needs to be taken to the garage", "noah", Tag.NAME),
 ), lambda low: low in NP_OPENERS or low.isalpha(),
-    "'Ana needs guiding to the door', 'the guest has to be taken to the exit': guide/take the person there")
+    "'Ana needs guiding to the door', 'the guest has to be taken to the exit': guide/take the person there",
+   needs=first_words(_NEEDS_DONE))
 PERSON_NEED_DROPPED = Rule("the need after the person", _person_need_dropped, (
     Example("Morgan needs to be led to the bookshelf", "needs to be led", ""),
 ), first_words(_NEEDS_DONE), "the 'needs to be led' of 'Morgan needs to be led to X', dropped: 'lead' was unsaid")
@@ -2243,7 +2246,7 @@ REQUEST_FOR = Rule("may a person have a thing", _request_for, (
 SWITCHED_ALONE = Rule("a thing switched on or off", _switched_alone, (
     Example("Lights off in the hall.", "Lights", Tag.WORD),
     Example("the porch lamp on, please", "on", Tag.PARTICLE),
-), None, "'lights off (in the hall)': turn the lights off")
+), None, "'lights off (in the hall)': turn the lights off", needs=frozenset(SWITCHED_MEANS))
 WISH_OF = Rule("a person's wish for a thing", _wish_of, (
     Example("Anna wants the cup", "Anna wants", Tag.VERB),
     Example("Ben needs a towel.", "Ben needs", Tag.VERB),
@@ -2252,7 +2255,8 @@ WISH_OF = Rule("a person's wish for a thing", _wish_of, (
     Example("morgan needs a glass of water", "morgan needs", Tag.VERB),
     Example("grandpa could use a blanket", "grandpa could use", Tag.VERB),
     Example("Sara could do with a cup of tea", "Sara could do with", Tag.VERB),
-), None, "'Anna wants X', 'Ben needs X', 'Sara could use X': bring X to the person")
+), None, "'Anna wants X', 'Ben needs X', 'Sara could use X': bring X to the person",
+   needs=frozenset(wish[0] for wish in _WISHES_OF))
 WISH_OF_PHRASE = Rule("a wish said of a person's phrase", _wish_of_phrase, (
     Example("the person at the armchair needs a towel", "the", Tag.DET),
     Example("my son wants a glass of water", "my", Tag.POSS),
@@ -2262,7 +2266,8 @@ WISH_OF_DESCRIBED = Rule("a wish said of a person described", _wish_of_described
     Example("Robin, who is in the garage, needs a wrench", "Robin", Tag.NAME),
     Example("Sam in the study would like a coffee", "Sam", Tag.NAME),
     Example("dad, who's in the shed, wants his gloves", "dad", Tag.NAME),
-), None, "'Robin, who is in the garage, needs X', 'Sam in the study wants X': bring X to the person")
+), None, "'Robin, who is in the garage, needs X', 'Sam in the study wants X': bring X to the person",
+   needs=frozenset(wish[0] for wish in (*_WISHES_OF, ("want",), ("need",))))     # the words _wish_at reads
 WISH_DROPPED = Rule("the wish after a person's phrase", _wish_dropped, (
     Example("the person at the armchair needs a towel", "needs", ""),
     Example("Robin, who is in the garage, needs a wrench", ", needs", ""),
@@ -2353,7 +2358,7 @@ TOLD_HOW_MANY = Rule("said how many", _told_how_many, (
     Example("say how many people are in the hall", "say how many", Tag.VERB),
     Example("tell to me how many jars are in the shed", "tell to me how many", Tag.VERB),
     Example("tell me please how many jars are in the shed", "tell me please how many", Tag.VERB),   # words42
-), None, "a verb of saying and 'how many': tell me how many (Count)")
+), None, "a verb of saying and 'how many': tell me how many (Count)", needs=frozenset(["many"]))
 HOW_MANY_SEEN = Rule("how many X can you see", _how_many_seen, (
     Example("How many dishes can you see on the dining table?", "can", ""),
     Example("how many cups do you find in the kitchen", "do", ""),
@@ -2434,12 +2439,14 @@ STRANDED_WHERE = Rule("the preposition left at the end of which room", _stranded
 INFORMATION_GIVEN = Rule("give me the name of", _information_given, (
     Example("give me the name of the person at the door", "give", Tag.VERB),
     Example("Bring me the names of the three biggest objects on the shelf", "Bring", Tag.VERB),
-), None, "'give me the name of X': tell me the name of X", after=frozenset([START, Tag.POLITE, Tag.SEP]))
+), None, "'give me the name of X': tell me the name of X", after=frozenset([START, Tag.POLITE, Tag.SEP]),
+   needs=INFORMATION)
 NUMBER_OF_RULE = Rule("the number of", _number_of, (
     Example("Tell me the total number of snacks on the desk.", "Tell me the total number of", Tag.VERB),
     Example("What number of people in the bedroom wear white jackets?", "What number of", Tag.VERB),
     Example("Count the number of people wearing glasses in the kitchen", "Count the number of", Tag.VERB),
-), first_words(NUMBER_OF), "'tell me the number of X', 'what number of X': tell me how many X")
+), first_words(NUMBER_OF), "'tell me the number of X', 'what number of X': tell me how many X",
+   needs=frozenset(p.split()[-2] for p in NUMBER_OF))     # "number", "count": each phrase's noun
 LET_KNOW_RULE = Rule("let me know", _let_know, (
     Example("let me know when the laundry is done", "let", Tag.VERB),
     Example("let me know how many bottles are in the fridge", "let me know how many", Tag.VERB),

@@ -189,7 +189,8 @@ ASIDE = Rule("sentence beside the command", _aside, (
 QUESTION_ASKER = Rule("whose question, asked", _question_asker, (
     Example("answer whatever the man at the door asks you", "", Tag.OF),
     Example("answer the question she asks", "", Tag.OF),
-), None, "'answer whatever X asks (you)': X's question, as 'the question of X'", after=frozenset([Tag.WORD]))
+), None, "'answer whatever X asks (you)': X's question, as 'the question of X'", after=frozenset([Tag.WORD]),
+   needs=_ASKING)
 ASKING_DROPPED = Rule("whose question, asked: the asking", _asking_dropped, (
     Example("answer whatever the man at the door asks you", "asks you", ""),
 ), _ASKING, "the 'asks you' after the asker of 'answer whatever X asks you': dropped, X is whose question it is")

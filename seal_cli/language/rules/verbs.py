@@ -248,7 +248,8 @@ TOLD_TO_DO = Rule("told to do what the robot cannot", _told_to_do, (
 FOLLOW_ASKED_RULE = Rule("asked to follow", _follow_asked, (
     Example("ask Anna to follow you to the kitchen", "ask", Tag.VERB),
     Example("tell the man in the red hat to come with you", "tell", Tag.VERB),
-), FOLLOW_ASKED[1], "'ask X to follow you (to Y)': guide X (to Y)")
+), FOLLOW_ASKED[1], "'ask X to follow you (to Y)': guide X (to Y)",
+   needs=frozenset(p.split()[1] for p in FOLLOW_ASKED[2]))       # "follow", "come", ...: a word of each phrase
 FOLLOW_ASKED_DROPPED = Rule("asked to follow: what is asked", _follow_asked_dropped, (
     Example("ask Anna to follow you to the kitchen", "to follow you", ""),
 ), frozenset(["to"]), "the 'to follow you' of 'ask X to follow you': dropped, the verb is the guiding")
