@@ -311,6 +311,9 @@ def attacker_cases() -> Iterator[Case]:  # noqa: PLR0915 - one list of cases, re
 
     yield from hostile31_leftover_cases()
     yield from hostile31_cases()
+    from seal_cli.bench.reliability_hostile32 import hostile32_cases
+
+    yield from hostile32_cases()
 
 
 def hostile14_cases() -> Iterator[Case]:
