@@ -150,7 +150,7 @@ def _cycles(frames: Sequence[Frame], taxonomy: Taxonomy) -> Iterator[SealError]:
     edges = {name: [other for key in sorted(needs[name]) for other in achievers[key] if other in stuck_set]
              for name in stuck}
     for component in _components(stuck, edges):
-        path = _shortest_cycle(component, edges)
+        path = _round(component, edges)
         if path:
             chain = " → ".join(path + [path[0]])
             yield SealError(f"precondition cycle: {chain}; none of these frames can ever run, because each needs "
@@ -221,6 +221,49 @@ def _components(nodes: list[str], edges: dict[str, list[str]]) -> list[list[str]
     return found
 
 
+def _round(component: list[str], edges: dict[str, list[str]]) -> list[str] | None:
+    """A way round the whole component from its first frame and back, through every frame of it: the shortest
+    way to the nearest frame not yet passed, again and again, then home (a frame passed twice where no simple cycle
+    holds them all: "Zap → Bop → Zap → Cop → Zap"). A frame's need of what it achieves itself is no step of it when
+    the component holds others: a cycle of three where one frame also needs its own was said "Zap → Zap", naming
+    one frame of the three (hostile32)."""
+    if len(component) == 1:
+        return _shortest_cycle(component, edges)
+    inside = set(component)
+    steps = {name: [other for other in edges[name] if other != name and other in inside] for name in component}
+    start = component[0]
+    walk, here, left = [start], start, inside - {start}
+    while left:
+        way = _shortest_way(here, left, steps)
+        walk += way
+        here = way[-1]
+        left -= set(way)
+    walk += _shortest_way(here, {start}, steps)
+    return walk[:-1]
+
+
+def _shortest_way(start: str, goals: set[str], steps: dict[str, list[str]]) -> list[str]:
+    """The frames after ``start`` on a shortest way to one of ``goals`` (``start`` itself may be one: the way
+    back), the first found in the edges' order; ``steps`` is strongly connected, so there is one."""
+    previous: dict[str, str] = {}
+    seen, frontier = {start}, [start]
+    while frontier:
+        following = []
+        for name in frontier:
+            for other in steps[name]:
+                if other in goals:
+                    way = [other, name]
+                    while way[-1] != start:
+                        way.append(previous[way[-1]])
+                    return way[::-1][1:]
+                if other not in seen:
+                    seen.add(other)
+                    previous[other] = name
+                    following.append(other)
+        frontier = following
+    raise AssertionError(f"no way from {start} to {sorted(goals)} inside a strongly connected component")
+
+
 def _shortest_cycle(component: list[str], edges: dict[str, list[str]]) -> list[str] | None:
     """The shortest path from the component's first frame back to it, inside the component."""
     start, inside = component[0], set(component)
@@ -250,7 +293,7 @@ def _category_cycles(taxonomy: Taxonomy) -> Iterator[SealError]:
     edges = {name: [class_key(m) for m in by_name[name].members or () if class_key(m) in by_name
                     and class_key(m) != name] for name in names}
     for component in _components(names, edges):
-        path = _shortest_cycle(component, edges)
+        path = _round(component, edges)
         if path:
             yield SealError(f"category cycle: {' → '.join(path + [path[0]])}; a category cannot contain itself",
                             by_name[path[0]].where)
