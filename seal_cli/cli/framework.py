@@ -105,7 +105,7 @@ class _OnceCommand(TyperCommand):
         given: dict[str, list[str]] = ctx.meta.setdefault(_GIVEN, {})
         for option in {id(o): o for o in (*parser._long_opt.values(), *parser._short_opt.values())}.values():
             if option.action == "store" and option.obj is not None:
-                option.process = functools.partial(_noted, option.process, given, option.obj)
+                option.process = functools.partial(_noted, option.process, given, option.obj)  # type: ignore[method-assign]
         return parser
 
 
