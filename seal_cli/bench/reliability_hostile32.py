@@ -143,7 +143,7 @@ def _repeated_option_cases() -> Iterator[Case]:
                codes=(0,), says=r"(?s).")
     yield Case("A plan --json given twice", ("plan", "go to the kitchen", "--map", "apartment", "--json", "--json"),
                codes=(0,), says=r"(?s).")
-    yield Case("A validate of two frame files with --framelib given twice",
+    yield Case("A parse with --framelib given twice",
                ("parse", "zap the cup", "--framelib", "+f.frame", "--framelib", "+g.frame"),
                (("f.frame", CATEGORY + _frame(b"Zap", b"zap")),
                 ("g.frame", b"category dish = plate\n" + _frame(b"Bop", b"bop"))), codes=(0,),
