@@ -114,6 +114,9 @@ def validate_paths(paths: Iterable[str | Path], with_stdlib: bool = False) -> Re
         report.frames = len(library) - (len(read_library(extra)[0]) if extra else 0)
         report.categories = len(library.taxonomy.categories)
         report.problems.extend(found)
+        from seal_cli.language.units import unit_problems  # what a word of English is: the language's to say
+
+        report.problems.extend(unit_problems(library))
     for path in maps:
         report.problems.extend(check_map_file(path))
     report.problems.sort(key=lambda p: (p.file or "", p.line or 0, p.column or 0))

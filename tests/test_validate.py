@@ -71,3 +71,12 @@ def test_the_top_level_keys_are_read_without_composing_the_file() -> None:
     assert top_level_keys(text) == {"name", "bounds", "rooms", "priors"}
     assert top_level_keys("- a\n") is None and top_level_keys("a\n") is None and top_level_keys("") == set()
     assert top_level_keys("frames: []\nx: {frame: 1}\n---\nrooms: []\n") == {"frames", "x"}   # the first document
+
+
+def test_a_lexical_unit_that_is_a_function_word_is_a_problem_at_its_line(tmp_path: Path) -> None:
+    """The frame readers took "the" as a unit, and "the cup" then parsed as its frame (hostile32)."""
+    (tmp_path / "z.frame").write_text('category object = cup\nframe Zap "zap" "of" {\n  theme: object\n'
+                                      "  do navigate(theme)\n}\n")
+    report = validate_paths([tmp_path / "z.frame"])
+    assert [(p.line, p.column) for p in report.problems] == [(2, 17)]
+    assert "lexical unit 'of' of Zap is a preposition" in report.problems[0].message

@@ -3,7 +3,8 @@
 A :class:`Case` is a command on one of the suite's maps (``apartment``: ``maps/apartment.yaml``;
 ``aws``: the AWS small house annotated with rooms, places, people and things by
 :func:`seal_cli.bench.houses.aws_house`; any other map shipped in ``maps/``, such as ``townhouse``; or a
-map file, by its path from the cases file), and what must come of it:
+map file, by its path from the cases file, inside its folder's tree or seal's maps, or by an absolute path:
+:func:`_map_file`), and what must come of it:
 
 - ``plan``: the steps ``seal plan --map`` must print (frames and their map ids, in order); or
   ``refused``: words the refusal must contain (a room the map lacks, a fixed thing to pick up);
@@ -175,17 +176,31 @@ def _load(path: Path) -> list[Case]:
 
 
 def _map_file(name: str, base: Path, number: int, suite: Path) -> str | None:
-    """Where a case's map is: None for one of :data:`MAPS`; else a map file beside the cases file, or a
-    shipped map; a name that is neither is refused, naming the case."""
+    """Where a case's map is: None for one of :data:`MAPS`; else, for a relative name, a map file found from the
+    cases file's folder (``base``), never from the working folder, or a shipped map by its name (``townhouse``); for
+    an absolute name, that file, as given.
+
+    A relative name must stay inside the cases file's folder or the folder of seal's shipped maps once its ``..``
+    are taken (hostile32: ``map: ../../etc/passwd`` was read as a map, and refused only as one; a name not beside
+    the suite was looked for from where seal was started). The names are compared as written, ``..`` taken away
+    but links not followed: a link put in the suite's folder is the suite's own. A map elsewhere is named by its
+    absolute path, which says where it is whatever folder the suite is in or is run from."""
     if name in MAPS:
         return None
-    from seal_cli.resources import map_path
+    import os
 
-    beside = base / name
-    try:
-        found = beside if beside.is_file() else map_path(name)
-    except SealError:  # neither a file nor a shipped map: said below, with the case's number
-        found = beside
+    from seal_cli.resources import maps_dir
+
+    given = Path(name)
+    folder = Path(os.path.normpath(base.absolute()))
+    shipped = Path(os.path.normpath(maps_dir().absolute()))
+    found = given if given.is_absolute() else Path(os.path.normpath(folder / given))
+    if not given.is_absolute() and not found.is_file() and os.sep not in name:       # a shipped map, by its name
+        found = shipped / (name if name.endswith((".yaml", ".yml")) else f"{name}.yaml")
+    elif not given.is_absolute() and not (found.is_relative_to(folder) or found.is_relative_to(shipped)):
+        raise SealError(f"case {number}'s map {name!r} is outside the suite's folder {folder} and seal's maps: a "
+                        "case names a map file in its suite's folder or below it, or a shipped map; give a map "
+                        "elsewhere by its absolute path", Where(str(suite)))
     if not found.is_file():
         raise SealError(f"case {number}: no map {name!r} (the suite's maps are {', '.join(MAPS)}; a shipped map "
                         "or a map file, relative to the cases file, also works)", Where(str(suite)))

@@ -51,7 +51,7 @@ def _sensor_and_name_cases() -> Iterator[Case]:  # noqa: PLR0915 - one list of c
     goes: written or read as the file without it); ``--goals -``; a map image that is a dangling link or a link loop;
     control characters in names inside files and in names given (an image's name through YAML's ``\\e``, a missing
     file's name, a scorer's relayed output)."""
-    from seal_cli.bench.reliability_attacker import alfred2d_data, robot_map
+    from seal_cli.bench.reliability_inputs import alfred2d_data, robot_map
     from seal_cli.resources import map_path
 
     (_, head), (_, image) = robot_map()
@@ -162,7 +162,7 @@ def _labels_verbs_and_numbers_cases() -> Iterator[Case]:  # noqa: PLR0915 - one 
     'zap' ... the robot can ... or zap"); an end-to-end suite whose case holds a number where a class goes (scored
     as a plan missed, not said at its line); numbers at the edges of what options take (seeds past 2**64, a clock of
     fullwidth digits or with a time zone, a time that is none)."""
-    from seal_cli.bench.reliability_attacker import _sample_bag
+    from seal_cli.bench.reliability_inputs import sample_bag as _sample_bag
 
     # -- end-to-end suites --------------------------------------------------------------------------------------------
     def suite(name: str, case: bytes, codes: tuple[int, ...], says: str) -> Case:

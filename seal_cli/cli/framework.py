@@ -14,6 +14,7 @@ from pathlib import Path
 from typing import Any, TypeVar
 
 import typer
+from typer.core import TyperCommand
 
 from seal_cli import __version__
 from seal_cli.cli.output import run_command
@@ -72,6 +73,7 @@ def command(*args: Any, on: typer.Typer | None = None, **kwargs: Any) -> Callabl
         @functools.wraps(function)
         def run(*a: Any, **kw: Any) -> None:
             def checked() -> int | None:
+                _refuse_repeated_options()
                 _refuse_empty_values(kw)
                 _refuse_folder_names_of_files(kw)
                 return function(*a, **_composed_commands(kw))
@@ -82,10 +84,53 @@ def command(*args: Any, on: typer.Typer | None = None, **kwargs: Any) -> Callabl
 
         if "short_help" not in kwargs and function.__doc__:
             kwargs["short_help"] = short_help(function.__doc__)
-        (on or app).command(*args, **kwargs)(run)
+        (on or app).command(*args, cls=_OnceCommand, **kwargs)(run)
         return function
 
     return decorate
+
+
+_GIVEN = "seal.given"
+"""The key, in a command's click context's ``meta``, of what each option taking one value was given, as typed."""
+
+
+class _OnceCommand(TyperCommand):
+    """typer's command, whose parser notes each value given to an option that takes one (click's ``store``
+    action): given twice (``--clock 10:00 --clock 11:00``) click keeps the last, silently; the command then refuses
+    it (:func:`_refuse_repeated_options`). Repeatable options (``--done``, ``--framelib``: click's ``append``) and
+    flags (``--json --json`` says the same once more) are left as they are."""
+
+    def make_parser(self, ctx: Any) -> Any:
+        parser = super().make_parser(ctx)
+        given: dict[str, list[str]] = ctx.meta.setdefault(_GIVEN, {})
+        for option in {id(o): o for o in (*parser._long_opt.values(), *parser._short_opt.values())}.values():
+            if option.action == "store" and option.obj is not None:
+                option.process = functools.partial(_noted, option.process, given, option.obj)  # type: ignore[method-assign]
+        return parser
+
+
+def _noted(process: Callable[[Any, Any], None], given: dict[str, list[str]], option: Any, value: Any,
+           state: Any) -> None:
+    """An option's value, noted under its longest name as the parser meets it, then stored as click stores it."""
+    given.setdefault(max(option.opts, key=len), []).append(value)
+    process(value, state)
+
+
+def _refuse_repeated_options() -> None:
+    """Refuse an option that takes one value given more than once, naming it and the values as typed (hostile32):
+    ``run --clock 10:00 --clock 11:00`` ran at 11:00, ``run --map studio --map apartment`` on the apartment, ``--seed
+    1 --seed 2`` with seed 2, and nothing said so."""
+    from typer._click.globals import get_current_context
+
+    from seal_cli.errors import SealError
+
+    context = get_current_context(silent=True)
+    given: dict[str, list[str]] = context.meta.get(_GIVEN, {}) if context is not None else {}
+    for option, values in given.items():
+        if len(values) > 1:
+            times = "twice" if len(values) == 2 else f"{len(values)} times"
+            shown = ", ".join(repr(v) if len(str(v)) <= 40 else repr(str(v)[:40]) + "…" for v in values)
+            raise SealError(f"{option} is given {times} ({shown}); it takes one value: give it once")
 
 
 def given(parameter: str) -> bool:

@@ -45,6 +45,11 @@ def frames(
     from seal_cli.frames.reading import load_library
 
     library = load_library(framelib_paths(framelib))
+    from seal_cli.errors import SealErrors
+    from seal_cli.language.units import unit_problems
+
+    if problems := unit_problems(library):   # what any command with this library refuses (hostile32)
+        raise problems[0] if len(problems) == 1 else SealErrors(problems)
     if name is not None:
         frame = library.frame(name)
         if as_json:

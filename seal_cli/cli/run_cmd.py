@@ -65,6 +65,39 @@ def _unread_options(suite: str, given: Callable[[str], bool]) -> None:
         said = "; ".join(f"{option} goes with --suite {' or '.join(suites)}" for option, suites in unread)
         raise SealError(f"--suite {suite} does not read {', '.join(o for o, _ in unread)}: {said}")
 
+def _unread_by_policy(policy: str, given: Callable[[str], bool]) -> None:
+    """Refuse the options of ``seal run`` given on the command line (``given(parameter)``) that ``--policy`` never
+    reads, before any work (hostile32): ``--policy oracle --search-end 0.5`` was taken and nothing done with it (the
+    oracle knows where everything is: it never searches); so was ``--particles`` of a policy that keeps no particles
+    (oracle, coverage, prior_optimal, frame_dp, saycan) and ``--clock``, ``--vocabulary`` and ``--search-end`` of
+    saycan, which runs from the text alone (its ``--rrd``, ``--png`` and ``--done`` are refused where it runs)."""
+    from seal_cli.errors import SealError
+
+    entry = POLICIES.get(policy)
+    if entry is None:           # an unknown policy: make_policy says so, with the known ones
+        return
+    searcher = entry.load()
+    itself = getattr(searcher, "drives_itself", False)
+    text_alone = "runs from the instruction text alone, with no clock, vocabulary or search of seal's"
+    unread = []
+    if given("particles") and not searcher.keeps_particles:
+        keeping = [name for name, e in POLICIES.items() if e.load().keeps_particles]
+        unread.append(("--particles", f"keeps no particle beliefs (--particles goes with {', '.join(keeping)})"))
+    if given("search_end") and (searcher.oracle or itself):
+        unread.append(("--search-end", "knows where everything is and never searches" if searcher.oracle
+                       else text_alone))
+    for name, option in (("clock", "--clock"), ("vocabulary_file", "--vocabulary")):
+        if itself and given(name):
+            unread.append((option, text_alone))
+    if unread:
+        by_why: dict[str, list[str]] = {}
+        for option, why in unread:
+            by_why.setdefault(why, []).append(option)
+        said = "; ".join(f"{' and '.join(options)} {'is' if len(options) == 1 else 'are'} not read by --policy "
+                         f"{policy}, which {why}" for why, options in by_why.items())
+        raise SealError(f"{said}: leave {'it' if len(unread) == 1 else 'them'} out")
+
+
 KIND_STYLE = {"warn": "yellow", "plan": "bold", "frame": "bold cyan", "search": "yellow", "go": "", "see": "green",
               "look": "dim", "act": "green", "fail": "red", "replan": "magenta", "done": "bold green",
               "give_up": "bold red", "answer": "bold magenta"}
@@ -137,6 +170,7 @@ def run(
     from seal_cli.sim.agent import Budget
     from seal_cli.sim.policies import make_policy
 
+    _unread_by_policy(policy, given)
     held = one_held(holding)
     start_clock = read_clock(clock)
     library = load_library(framelib_paths(framelib))

@@ -150,11 +150,8 @@ def _cycles(frames: Sequence[Frame], taxonomy: Taxonomy) -> Iterator[SealError]:
     edges = {name: [other for key in sorted(needs[name]) for other in achievers[key] if other in stuck_set]
              for name in stuck}
     for component in _components(stuck, edges):
-        path = _shortest_cycle(component, edges)
-        if path:
-            chain = " → ".join(path + [path[0]])
-            yield SealError(f"precondition cycle: {chain}; none of these frames can ever run, because each needs "
-                            "what only another one in the cycle achieves", unique[path[0]].where)
+        yield SealError(f"precondition cycle: {_round(component, edges)}; none of these frames can ever run, because "
+                        "each needs what only another one in the cycle achieves", unique[component[0]].where)
 
 
 def _runnable(frames: dict[str, Frame], needs: dict[str, set[tuple[str, bool, int]]]) -> set[str]:
@@ -221,25 +218,59 @@ def _components(nodes: list[str], edges: dict[str, list[str]]) -> list[list[str]
     return found
 
 
-def _shortest_cycle(component: list[str], edges: dict[str, list[str]]) -> list[str] | None:
-    """The shortest path from the component's first frame back to it, inside the component."""
-    start, inside = component[0], set(component)
+WHOLE = 30
+"""The most frames (or categories) a cycle is said through, every one: a larger knot of them that need one another
+is said by one loop through its first and how many more there are (a way round 5,000 frames took 10 s to find and
+would be no message to read)."""
+
+
+def _round(component: list[str], edges: dict[str, list[str]]) -> str:
+    """The component said as a way round it from its first member and back, through every member: the shortest
+    way to the nearest one not yet passed, again and again, then home (a member passed twice where no simple cycle
+    holds them all: "Zap → Bop → Zap → Cop → Zap"). A member's need of what it achieves itself is no step of it when
+    the component holds others: a cycle of three where one frame also needs its own was said "Zap → Zap", naming
+    one frame of the three (hostile32). Past :data:`WHOLE` members, the shortest loop through the first and the
+    count of the rest."""
+    start = component[0]
+    if len(component) == 1:
+        return f"{start} → {start}"
+    inside = set(component)
+    steps = {name: [other for other in edges[name] if other != name and other in inside] for name in component}
+    if len(component) > WHOLE:
+        loop = [start, *_shortest_way(start, {start}, steps)]
+        on = set(loop)
+        others = [name for name in component if name not in on]
+        more = f" (and {len(others):,} more of the same knot: {', '.join(others[:3])}{', …' * (len(others) > 3)})"
+        return " → ".join(loop) + (more if others else "")
+    walk, here, left = [start], start, inside - {start}
+    while left:
+        way = _shortest_way(here, left, steps)
+        walk += way
+        here = way[-1]
+        left -= set(way)
+    return " → ".join(walk + _shortest_way(here, {start}, steps))
+
+
+def _shortest_way(start: str, goals: set[str], steps: dict[str, list[str]]) -> list[str]:
+    """The frames after ``start`` on a shortest way to one of ``goals`` (``start`` itself may be one: the way
+    back), the first found in the edges' order; ``steps`` is strongly connected, so there is one."""
     previous: dict[str, str] = {}
-    frontier = [start]
+    seen, frontier = {start}, [start]
     while frontier:
         following = []
         for name in frontier:
-            for other in edges[name]:
-                if other == start:
-                    path = [name]
-                    while path[-1] != start:
-                        path.append(previous[path[-1]])
-                    return path[::-1]
-                if other in inside and other not in previous:
+            for other in steps[name]:
+                if other in goals:
+                    way = [other, name]
+                    while way[-1] != start:
+                        way.append(previous[way[-1]])
+                    return way[::-1][1:]
+                if other not in seen:
+                    seen.add(other)
                     previous[other] = name
                     following.append(other)
         frontier = following
-    return None
+    raise AssertionError(f"no way from {start} to {sorted(goals)} inside a strongly connected component")
 
 
 def _category_cycles(taxonomy: Taxonomy) -> Iterator[SealError]:
@@ -250,10 +281,8 @@ def _category_cycles(taxonomy: Taxonomy) -> Iterator[SealError]:
     edges = {name: [class_key(m) for m in by_name[name].members or () if class_key(m) in by_name
                     and class_key(m) != name] for name in names}
     for component in _components(names, edges):
-        path = _shortest_cycle(component, edges)
-        if path:
-            yield SealError(f"category cycle: {' → '.join(path + [path[0]])}; a category cannot contain itself",
-                            by_name[path[0]].where)
+        yield SealError(f"category cycle: {_round(component, edges)}; a category cannot contain itself",
+                        by_name[component[0]].where)
 
 
 def _pattern(frame: Frame) -> frozenset[tuple[str, str]]:

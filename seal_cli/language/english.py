@@ -724,3 +724,20 @@ RELAYED_OBLIGATION = frozenset(["have to", "must", "should", "need to", "ought t
                                 "are to", "to", "can", "could", "will", "may"])
 """What comes after "you" in a request passed on ("... says you *have to* turn off the telly", "... asked you *to*
 bring her a towel"), before its verb."""
+OF = "of"
+"""The preposition of a part, a measure or a whole ("a slice *of* apple", "one *of* them"): read by its own rule
+(``rules.function_words.OF``), not one of :data:`PREPOSITIONS`, which say where."""
+FUNCTION_WORD_CLASSES: tuple[tuple[str, frozenset[str]], ...] = (
+    ("a determiner", DETERMINERS), ("a possessive", POSSESSIVES), ("a pronoun", PRONOUNS),
+    ("a preposition", frozenset(p for p in PREPOSITIONS if " " not in p) | {OF}),
+    ("a conjunction", frozenset(w for w in SEPARATOR_WORDS | AND_WORDS if w.isalpha())),
+    ("a form of 'be'", BE_WORDS), ("a modal verb", MODALS), ("a question word", WH_WORDS),
+    ("a relative pronoun", RELATIVES), ("a number", frozenset(n for n in NUMBERS if " " not in n)))
+"""The closed classes of one word, by what a message calls a word of each, from the tables above: words that never
+head a verb phrase of a command (hostile32: a frame library's lexical unit "the" read "the cup" as that frame)."""
+
+
+def function_word_class(word: str) -> str | None:
+    """What kind of function word ``word`` is ("a determiner" for "the"), or None for an open-class word."""
+    low = word.lower()
+    return next((kind for kind, words in FUNCTION_WORD_CLASSES if low in words), None)

@@ -25,7 +25,7 @@ from typing import TYPE_CHECKING, Any
 
 from lark import Tree
 
-from seal_cli.errors import SealError
+from seal_cli.errors import SealError, SealErrors
 from seal_cli.frames.library import Library
 from seal_cli.language.asked import thing_asked
 from seal_cli.language.clauses import Clauses
@@ -48,6 +48,7 @@ from seal_cli.language.syntax import NP, Syntax
 from seal_cli.language.tags import Tag
 from seal_cli.language.taskfields import reread
 from seal_cli.language.tasks import infer_task
+from seal_cli.language.units import unit_problems
 from seal_cli.language.unplaced import unplaced_error
 from seal_cli.language.values import Evoked, Parse, Phrase
 
@@ -67,6 +68,9 @@ class CommandParser:
     """How many parse trees are kept (by tag sequence) before the cache starts again."""
 
     def __init__(self, library: Library) -> None:
+        problems = unit_problems(library)      # a unit "the" read "the cup" as its frame (hostile32)
+        if problems:
+            raise problems[0] if len(problems) == 1 else SealErrors(problems)
         self.library = library
         self.lexicon = Lexicon.of(library)
         self.types = Types(library)

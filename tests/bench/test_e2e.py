@@ -96,3 +96,38 @@ def test_a_suite_of_no_cases_is_refused(tmp_path: Path) -> None:
     (tmp_path / "e.yaml").write_text("cases: []\n")
     with pytest.raises(SealError, match=r"e\.yaml:1:8: the suite holds no cases"):
         load_cases(tmp_path / "e.yaml")
+
+
+def test_a_cases_map_is_found_from_the_suite_inside_its_folder_or_seals_maps(tmp_path: Path,
+                                                                            monkeypatch: pytest.MonkeyPatch) -> None:
+    """``map: ../../etc/passwd`` was read as a map, and a name not beside the suite was looked for from the working
+    folder (hostile32). Relative names stay in the suite's folder's tree or seal's maps; an absolute one is as
+    given."""
+    import os
+
+    from seal_cli.resources import map_path, maps_dir
+
+    suite, outside = tmp_path / "s", tmp_path / "elsewhere"
+    (suite / "maps").mkdir(parents=True)
+    outside.mkdir()
+    studio = map_path("studio").read_text()
+    for where in (suite / "maps" / "m.yaml", tmp_path / "m.yaml", outside / "o.yaml"):
+        where.write_text(studio)
+    monkeypatch.chdir(tmp_path)                      # m.yaml is in the working folder, not beside the suite
+
+    def load(map_name: str) -> str | None:
+        (suite / "e.yaml").write_text(f"cases:\n  - {GOOD.replace('apartment', repr(map_name))}\n")
+        return load_cases(suite / "e.yaml")[0].file
+
+    assert load("maps/m.yaml") == str((suite / "maps" / "m.yaml").resolve())
+    assert load("maps/../maps/m.yaml") == str((suite / "maps" / "m.yaml").resolve())
+    assert load("studio") == str(map_path("studio").resolve())                          # a shipped map by its name
+    to_shipped = os.path.relpath(maps_dir() / "studio.yaml", suite)                     # seal's maps, by a path
+    assert load(to_shipped) == str(map_path("studio").resolve())
+    assert load(str(outside / "o.yaml")) == str((outside / "o.yaml").resolve())         # absolute: as given
+    for name in ("../m.yaml", "../elsewhere/o.yaml", "../" * 20 + "etc/passwd", "maps/../../m.yaml"):
+        with pytest.raises(SealError, match=rf"e\.yaml:2:\d+: case 1's map '{name}' is outside the suite's folder "
+                                            rf".* give a map elsewhere by its absolute path"):
+            load(name)
+    with pytest.raises(SealError, match=r"e\.yaml:2:\d+: case 1: no map 'm\.yaml'"):
+        load("m.yaml")

@@ -9,6 +9,7 @@ import sys
 from pathlib import Path
 from typing import Any
 
+import pytest
 import typer
 from typer.testing import CliRunner
 
@@ -111,3 +112,30 @@ def test_a_files_name_with_a_slash_after_it_is_refused_naming_the_option(tmp_pat
                            "--pddl", "d/"], cwd=tmp_path, capture_output=True, text=True, env=env)
     written = sorted(p.name for p in (tmp_path / "d").iterdir())
     assert done.returncode == 0 and written == ["domain.pddl", "problem.pddl"]
+
+
+def test_an_option_of_one_value_given_twice_is_refused_for_every_command(tmp_path: Path,
+                                                                         monkeypatch: pytest.MonkeyPatch) -> None:
+    """click kept the last value, silently: ``--clock 10:00 --clock 11:00`` ran at 11:00 (hostile32). Every command
+    is made by the framework's command class, so none keeps the last."""
+    from seal_cli.cli.framework import _OnceCommand
+
+    monkeypatch.chdir(tmp_path)
+    assert all(isinstance(c, _OnceCommand) for name, c in _commands() if name and not hasattr(c, "commands"))
+    for argv, says in ((["run", "go to the sofa", "--map", "studio", "--clock", "10:00", "--clock=11:00"],
+                        "--clock is given twice ('10:00', '11:00'); it takes one value: give it once"),
+                       (["plan", "go to the sofa", "--map", "studio", "--map", "apartment", "--map", "studio"],
+                        "--map is given 3 times ('studio', 'apartment', 'studio')"),
+                       (["map", "studio", "--png", "a.png", "--png", "b.png"], "--png is given twice"),
+                       (["bench", "e2e", "--jobs", "1", "--jobs", "1"], "--jobs is given twice ('1', '1')"),
+                       (["run", "go to the sofa", "--map", "studio", "--vocabulary", "v.yaml", "--vocabulary",
+                         "x" * 100], "--vocabulary is given twice ('v.yaml', '" + "x" * 40 + "'…)")):
+        result = runner.invoke(app, argv)
+        assert result.exit_code == 1 and f"error: {says}" in result.output, (argv, result.output)
+    assert list(tmp_path.iterdir()) == []
+
+
+def test_repeatable_options_and_flags_given_twice_stay(tmp_path: Path) -> None:
+    result = runner.invoke(app, ["plan", "go to the sofa", "--map", "studio", "--done", "go to the hall", "--done",
+                                 "go to the balcony", "--json", "--json"])
+    assert result.exit_code == 0 and '"plan"' in result.output

@@ -218,3 +218,32 @@ def test_run_says_on_the_balcony_and_passes_a_message_on_in_the_third_person() -
     told = runner.invoke(app, ["run", "--map", "studio", "tell Nora I'm ready", "--particles", "100"])
     assert told.exit_code == 0, told.output
     assert 'said "the person who sent me says they\'re ready"' in told.output
+
+
+@pytest.mark.parametrize(("policy", "options", "says"), [
+    ("oracle", ["--search-end", "0.5"], "--search-end is not read by --policy oracle, which knows where everything is "
+                                        "and never searches: leave it out"),
+    ("oracle", ["--search-end", "0.05"], "--search-end is not read by --policy oracle"),        # its default, given
+    ("coverage", ["--particles", "50"], "--particles is not read by --policy coverage, which keeps no particle beliefs "
+                                        "(--particles goes with sefm, object_only, uniform): leave it out"),
+    ("prior_optimal", ["--particles", "50", "--search-end", "0.5"], "--particles is not read by --policy "
+                                                                     "prior_optimal"),
+    ("saycan", ["--clock", "10:00", "--vocabulary", "v.yaml"], "--clock and --vocabulary are not read by --policy "
+                                                               "saycan, which runs from the instruction text alone"),
+])
+def test_an_option_the_policy_never_reads_is_refused_before_any_work(policy: str, options: list[str],
+                                                                     says: str) -> None:
+    """``--policy oracle --search-end 0.5`` was taken and nothing done with it: the oracle never searches
+    (hostile32)."""
+    result = runner.invoke(app, ["run", "go to the sofa", "--map", "studio", "--policy", policy, *options])
+    assert result.exit_code == 1 and f"error: {says}" in result.output, result.output
+
+
+def test_the_options_a_policy_reads_stay() -> None:
+    from seal_cli.sim.policies import POLICIES
+
+    assert {n for n, e in POLICIES.items() if e.load().keeps_particles} == {"sefm", "object_only", "uniform"}
+    for policy, options in (("object_only", ["--particles", "30", "--search-end", "0.5"]),
+                            ("coverage", ["--search-end", "0.5"]), ("oracle", ["--clock", "10:00"])):
+        result = runner.invoke(app, ["run", "go to the sofa", "--map", "studio", "--policy", policy, *options])
+        assert result.exit_code == 0 and "done: Go(goal=sofa_1)" in result.output, (policy, result.output)

@@ -34,6 +34,9 @@ class Policy:
     name: ClassVar[str] = "policy"
     oracle: ClassVar[bool] = False
     """The robot knows where every thing is from the start (the world's items are given to it)."""
+    keeps_particles: ClassVar[bool] = False
+    """Its beliefs are particles, as many as :meth:`make`'s ``particles`` (``seal run --particles`` is for it alone:
+    given to a policy that keeps none, it is refused, not passed over; hostile32)."""
     keep_clouds: bool = False
     """Keep the belief clouds after every update, for pictures and recordings (``seal run --png/--rrd``)."""
 

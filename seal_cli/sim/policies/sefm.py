@@ -194,6 +194,7 @@ class SeFMPolicy(Policy):
 
     name = "sefm"
     use_frames = True
+    keeps_particles = True
 
     def __init__(self, *, particles: int = 200, priors: bool = True, bandwidth: float = 0.5,
                  distance_scale: float = 0.1) -> None:
