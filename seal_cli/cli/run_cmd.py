@@ -65,6 +65,7 @@ def _unread_options(suite: str, given: Callable[[str], bool]) -> None:
         said = "; ".join(f"{option} goes with --suite {' or '.join(suites)}" for option, suites in unread)
         raise SealError(f"--suite {suite} does not read {', '.join(o for o, _ in unread)}: {said}")
 
+
 def _unread_by_policy(policy: str, given: Callable[[str], bool]) -> None:
     """Refuse the options of ``seal run`` given on the command line (``given(parameter)``) that ``--policy`` never
     reads, before any work (hostile32): ``--policy oracle --search-end 0.5`` was taken and nothing done with it (the

@@ -82,7 +82,6 @@ __all__ = ["AGAIN_LEAST", "MAX_LENGTH", "NP_START", "CommandError", "Lexicon", "
            "mentions", "noun_lemma", "tag", "tokenize", "verb_lemma"]
 
 
-
 # ---------------------------------------------------------------------------------------------
 # The lexicon of one library
 

@@ -104,7 +104,6 @@ def _ends_in_a_pair(word: str) -> bool:
     the sunglasses on the reception desk'`, "give them to Jack" was refused: the tables know "glasses", not
     "sunglasses")."""
     from seal_cli.language.morphology import noun_lemma
-    from seal_cli.planning.grounding import PAIRED
 
     for k in range(1, len(word) - 3):
         part = word[k:]
