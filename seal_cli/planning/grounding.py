@@ -179,6 +179,10 @@ class MapNames:
         self.room_said: str | None = None
         """The room an earlier frame of the command named last ("go to the bedroom and put it on the bed"): of
         several places, the ones in it are meant."""
+        self.carried: str | None = None
+        """The class of the thing the frame being grounded carries to the place its words name ("put the book on the
+        shelf"), or None: of the places the words may call, one the map's priors keep such a thing on
+        (:meth:`_kept_there`)."""
         self.robot_at: tuple[tuple[float, float], str] | None = None
         """Where the robot will be when it sets off for the phrase being grounded, and how to say it ("where it takes
         the guitar"); None: where it starts. Of several places, the nearest is measured from there."""
@@ -330,7 +334,7 @@ class MapNames:
         thing, where = _split(words)
         # the first words of a compound name call it only where to go ("go to the tv": the tv stand);
         # a thing is named by its head ("a coffee" is no coffee machine, "turn off the tv" no tv stand)
-        found = self.candidates(thing, kinds, prefix=element_type in WHERE_TYPES)
+        found = self._kept_there(thing, self.candidates(thing, kinds, prefix=element_type in WHERE_TYPES))
         if not found:
             return None
         if where and (room := self._room_of_words(where)) is not None:
@@ -345,6 +349,36 @@ class MapNames:
         if element_type == "openable":
             typed = [r for r in typed if r.kind == "place" and self._openable(r.id)] or typed
         return self._one_of(text, typed or found)
+
+    def _kept_there(self, words: tuple[str, ...], found: list[Referent]) -> list[Referent]:
+        """The places a word calls, weighed by what is carried there (:attr:`carried`): when none of the places it
+        names best is one the map's priors keep the thing on, but a place it names less surely is — a compound
+        whose last part it is ("the shelf" for a bookshelf), or a kind of it by the library's categories — the
+        places of the highest prior mass among those ("put the book back on the shelf" in a library with a
+        storeroom shelf and three bookshelves: a bookshelf; the storeroom's shelf keeps boxes). The words' own
+        best places stand when the priors keep the thing on any of them, or keep no such thing at all."""
+        if self.carried is None or not words or any(r.kind != "place" for r in found):
+            return found
+        from seal_cli.planning.keeping import prior_of
+
+        prior = prior_of(self.map.priors, self.carried)
+
+        def mass(r: Referent) -> float:
+            return prior.get(r.id, 0.0) + prior.get(class_key(r.cls), 0.0)
+
+        if not prior or any(mass(r) > 0 for r in found):
+            return found
+        loose = [r for r in self.referents if r.kind == "place" and r not in found and mass(r) > 0
+                 and self._a_kind_of(r, words[-1])]
+        best = max((mass(r) for r in loose), default=0.0)
+        return [r for r in loose if mass(r) == best] or found
+
+    def _a_kind_of(self, referent: Referent, word: str) -> bool:
+        """Whether a place is a kind of what a word names: its name or class is one word ending in it ("bookshelf",
+        "shelf"; a word of four letters or more), or the library's categories put its class under the word's."""
+        if len(word) >= 4 and any(len(n) == 1 and n[0] != word and n[0].endswith(word) for n in referent.names):
+            return True
+        return class_key(referent.cls) != class_key(word) and self.taxonomy.is_a(referent.cls, class_key(word)) is True
 
     def _one_of(self, text: str, found: list[Referent]) -> Referent:
         """The one of several referents a phrase calls: the one nearest the speaker when the phrase says it is

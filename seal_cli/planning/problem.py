@@ -331,8 +331,8 @@ class Things:
         return self.rooms.get(name) == where
 
     def swap(self, one: str, other: str) -> None:
-        """Let two things of one class trade names: what the map says of each (its ``in`` facts, its room) is
-        said of the other."""
+        """Let two things of one class trade names: what the map says of each (its ``in`` facts, its room, which of
+        the map's objects it is) is said of the other."""
         def named(value: str) -> str:
             return other if value == one else one if value == other else value
 
@@ -343,6 +343,7 @@ class Things:
         self.rooms = {k: v for k, v in self.rooms.items() if k not in (one, other)} | rooms
         points = {named(k): v for k, v in self.points.items() if k in (one, other)}
         self.points = {k: v for k, v in self.points.items() if k not in (one, other)} | points
+        self.object_names = [named(n) for n in self.object_names]   # each name stays with what the map says of it
 
     def hold(self, holding: str | None) -> None:
         """Keep what the robot holds as the command starts (:attr:`held`): ``holding`` (a class, refused if
@@ -945,7 +946,7 @@ def commanded_frames(parse: Parse, library: Library, things: Things) -> list[Bin
     """The grounded frames a parse commands, in order; a counted element repeats its frame."""
     from seal_cli.language.reference import back_unplaced
     from seal_cli.planning.fetching import brought
-    from seal_cli.planning.questions import asks_whether, looking
+    from seal_cli.planning.questions import asks_where_every, asks_whether, looking
     from seal_cli.planning.returning import returned, says_back
 
     parse = replace(parse, frames=returned(parse.frames, library, parse.text))   # "return it", "take it back"
@@ -967,12 +968,15 @@ def commanded_frames(parse: Parse, library: Library, things: Things) -> list[Bin
         for role in sorted(grounded, key=lambda r: r in CARRIED_TO):     # where a thing goes, once the thing is known
             if things.names is not None:
                 things.names.robot_at = _robot_at(frame, role, values, bindings, things)
+                things.names.carried = things.class_of(values["theme"][0]) \
+                    if role in ("goal", "source") and values.get("theme") and _carried(frame, "theme") else None
             values[role] = _values(_sought_where(evoked, role, things, role in asked), earlier, things, parse.text,
                                    frame.element(role).type, role in asked, _carried(frame, role),
                                    _gone_to(frame, role), not _taken_out_of_a_thing(evoked, things))
         values = {r: values[r] for r in grounded}
         if things.names is not None:
             things.names.robot_at = None
+            things.names.carried = None
         back_later = False
         backs: dict[str, Phrase | None] = {r: p for r, p in evoked.elements.items() if back_unplaced(p)}
         goal = evoked.elements.get("goal")
@@ -992,7 +996,8 @@ def commanded_frames(parse: Parse, library: Library, things: Things) -> list[Bin
         for role in _counted_roles(frame):      # "count the cups": one Count of the class
             if role in values:
                 values[role] = (things.class_of(values[role][0]),)
-        if "theme" in values and asks_whether(parse.text, evoked):    # "are there any cups ...?": one is enough
+        if "theme" in values and (asks_whether(parse.text, evoked) or asks_where_every(parse.text, evoked)):
+            # "are there any cups ...?": one is enough; "where are the cups?": one question of the kind
             values["theme"] = values["theme"][:1]
         storing = things.map is not None and stores(frame, evoked.lexical_unit)
         for element in frame.elements:      # (a storing unit's goal is where the thing is kept: _put_away)
@@ -1561,6 +1566,7 @@ def carry_out_done(done: Iterable[Parse], library: Library, things: Things) -> l
     frames: list[Binding] = []
     for earlier in done:
         bindings = commanded_frames(earlier, library, things)
+        _the_ones_said_where(bindings, things)  # "take the book from bookshelf 2 ...": that one, as a command takes it
         frames.extend(bindings)
         things.carry_out(earlier.text, bindings)
         things.named_before = [*things.named_before, *_people_named(bindings, things)]

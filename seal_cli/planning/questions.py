@@ -4,7 +4,10 @@ The parser gives a question the frame that finds its answer — "where is the cu
 cup in the kitchen?" are both Find, "how many cups ..." is Count, "what is on the dining table?" is
 Tell with the question as its message — but the *kind* of answer a person expects differs:
 
-- ``where``: a Find said as a command or as "where is ..."; the answer says where the thing is;
+- ``where``: a Find said as a command or as "where is ..."; the answer says where the thing is. Asked of a kind
+  in the plural ("where are the towels?", "where can I find cups?": :func:`asks_where_every`), the question is
+  ``every``: one Find of the kind, whose answer says where each one the robot finds is (``seal run`` looks
+  everywhere the map keeps the kind, docs/benchmarks.md, "e2e34");
 - ``whether``: a Find said as "is there ...", "are there ...", "is Anna in ..."; the answer is yes
   (and where) or no, from what the robot saw where the question asks;
 - ``how_many``: a Count; the answer is how many the robot saw there;
@@ -50,7 +53,7 @@ from seal_cli.language.english import CHECK_WHETHER, WH_WORDS
 from seal_cli.language.values import Evoked, Parse, Phrase
 from seal_cli.planning.grounding import MapNames, Referent, Refusal, words_of
 
-__all__ = ["ANY_THING", "FACTS", "KINDS", "STATE_WORDS", "Question", "anything_there", "asks_whether", "fact_asked",
+__all__ = ["ANY_THING", "FACTS", "KINDS", "STATE_WORDS", "Question", "anything_there", "asks_where_every", "asks_whether", "fact_asked",
            "looking", "name_asked", "put_to_person", "read_questions", "reports", "told_first"]
 
 KINDS = ("where", "whether", "how_many", "what", "state", "fact", "report", "asked")
@@ -116,6 +119,8 @@ class Question:
     """``what``: on, in or at (as the question says it); ``state``: the state word asked."""
     asks_for: str = "thing"
     """``what``: thing (what is there) or person (who is there)."""
+    every: bool = False
+    """``where``: the question asks where every one of a kind is ("where are the towels?"), not where one is."""
 
     def __post_init__(self) -> None:
         if self.kind not in KINDS:
@@ -139,6 +144,21 @@ def asks_whether(text: str, evoked: Evoked) -> bool:
     checks, ifs, _ = CHECK_WHETHER                      # "*see if* anyone is in the kitchen"
     return evoked.frame == "Find" and bool(first) and (first[0] in ASKING_WHETHER | ASKING_WHETHER_SHORT or any(
         first[k] in ifs and " ".join(first[:k]) in checks for k in range(1, len(first))))
+
+
+def asks_where_every(text: str, evoked: Evoked) -> bool:
+    """Whether a Find asks where the things of a kind are, in the plural ("*where* are the towels?", "*where* can I
+    find cups?"): one question, answered with every one found, so the kind is sought once. Not a number said ("where
+    are the two cups?": those two), nor one thing said in the plural: a pair ("where are my glasses?"), a noun with
+    a plural form only ("where are the scissors?"), a thing of a person's the parser reads as one ("my keys")."""
+    from seal_cli.language.morphology import plural_only
+    from seal_cli.planning.grounding import PAIRED
+
+    theme = evoked.elements.get("theme")
+    first = text[evoked.span[0]:evoked.span[1]].lower().split()[:1]
+    return (evoked.frame == "Find" and first == ["where"] and theme is not None and theme.plural
+            and theme.quantity is None and not theme.conjuncts and theme.refers_to is None
+            and theme.head.lower() not in PAIRED and not plural_only(theme.head.lower()))
 
 
 def put_to_person(message: Phrase) -> bool:
@@ -294,7 +314,8 @@ def read_questions(parse: Parse, commanded: Sequence[Binding], names: MapNames |
         elif evoked.frame == "Find" and "theme" not in evoked.elements:    # "look in the fridge": what is there
             question = _looked_at(commanded[start:k], names)
         elif evoked.frame == "Find":
-            question = Question("whether" if asks_whether(parse.text, evoked) else "where")
+            question = Question("whether") if asks_whether(parse.text, evoked) else \
+                Question("where", every=asks_where_every(parse.text, evoked))
         elif evoked.frame == "Count":
             question = Question("how_many")
         elif evoked.frame == "Tell" and (message := evoked.elements.get("message")) is not None:

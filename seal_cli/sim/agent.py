@@ -1055,6 +1055,9 @@ class Agent:
         into its closed receptacles, the nearest first. An Outcome when none is there."""
         views = 0
         start = len(self.looks)
+        every = question is not None and question.every and not self.is_person(value)
+        short = self.look_where_kept(self.said(value), spots, self.class_of(value)) \
+            if every and (spots := self.kept_spots(value)) else []
         while self.resolve(value, binding, role) is None:
             if (stop := self.exhausted()) is not None:
                 return Fatal(False, stop, Reason.BUDGET)
@@ -1519,6 +1522,9 @@ class Agent:
             went = self.go_to(value, binding)
             if not went.ok:
                 return went
+        every = question is not None and question.every and not self.is_person(value)
+        short = self.look_where_kept(self.said(value), spots, self.class_of(value)) \
+            if every and (spots := self.kept_spots(value)) else []
         while self.resolve(value, binding, role) is None:
             if (stop := self.exhausted()) is not None:
                 return Fatal(False, stop, Reason.BUDGET)
@@ -1538,11 +1544,33 @@ class Agent:
                 return went
         if target is not None and target in self.known:
             self.world.face(self.known[target].at)
+            if every:                   # found where the map keeps them, shut in again after the look: shown once more
+                self._show_inside(target)
             answer = self.where_is(target)
             if question is not None and question.kind == "whether":
                 answer = self._whether_person(target, ground, answer)
-            self.answer(answer)
+            if every:
+                self.answer_every(value, short)
+            else:
+                self.answer(answer)
         return self._act_words("search", [value])
+
+    def _show_inside(self, item_id: str) -> None:
+        """Open again the closed place within reach that a thing the robot found inside it lies in, to show it."""
+        parent = self.world.items.get(self.world.items[item_id].parent or "")
+        if parent is not None and parent.openable and not parent.is_open and self.world.within_reach(parent.id):
+            self.open_to_look(parent.id)
+            self.look(quiet=True)
+
+    def answer_every(self, value: str, short: Sequence[str]) -> None:
+        """"Where are the towels?": where each thing of the kind the robot knows is (those it saw where the map
+        keeps them, on the way, or where it left them), in the map's order; and where it could not look."""
+        key = self.class_of(value)
+        for known in sorted((k for k in self.known.values() if k.cls == key and k.id in self.world.items),
+                            key=lambda k: list(self.world.items).index(k.id)):
+            self.answer(self.where_is(known.id))
+        if short:
+            self.answer(f"it could not look at {', '.join(short)}")
 
     def _search_people(self, value: str, binding: Binding, ground: str, question: Question | None) -> Outcome:
         """Anyone in a room: look all over it, and go to the nearest person seen there (yes, and
@@ -2166,10 +2194,19 @@ class Agent:
         """"All the plates" (e2e24): every room and place the priors keep the kind in is looked all over or into
         (the nearest next, as the crow flies), not the whole house; then the things of the kind the robot knows,
         wherever it saw them (those it saw on the way count too)."""
+        short = self.look_where_kept(noun, spots)
+        n = sum(1 for k in self.known.values() if k.cls == key and k.id in self.world.items)
+        note = f" seen, but it could not look at {', '.join(short)}" if short else ""
+        return f"{counted(n, noun)} where the map keeps them{note}"
+
+    def look_where_kept(self, noun: str, spots: list[str], shown: str | None = None) -> list[str]:
+        """Look all over or into every room and place of ``spots`` (where the priors keep a kind), the nearest next
+        as the crow flies; the ones it could not look at (out of reach, out of time). ``shown``: a class whose
+        thing found in the last place looked into keeps it open, to be shown there ("where are the cups?")."""
         left = list(spots)
         short: list[str] = []
         said = ", ".join(f"the {s.replace('_', ' ')}" if self.room(s) is not None else s for s in spots)
-        self.say("search", f"looks where the map keeps {noun}s: {said}")
+        self.say("search", f"looks where the map keeps {plural_of(noun)}: {said}")
         def at(spot: str) -> tuple[float, float]:
             room = self.room(spot)
             return tuple(room.centroid) if room is not None else self.known[spot].at
@@ -2178,15 +2215,13 @@ class Agent:
             x, y = self.world.robot.pose[:2]
             spot = min(left, key=lambda s: math.dist(at(s), (x, y)))
             left.remove(spot)
-            _, _, complete = self.look_over(spot)
+            _, _, complete = self.look_over(spot, sought=shown if not left and self.room(spot) is None else None)
             if not complete.ok:
                 short.append(spot.replace("_", " "))
             if self.exhausted() is not None:
                 short.extend(s.replace("_", " ") for s in left)
                 break
-        n = sum(1 for k in self.known.values() if k.cls == key and k.id in self.world.items)
-        note = f" seen, but it could not look at {', '.join(short)}" if short else ""
-        return f"{counted(n, noun)} where the map keeps them{note}"
+        return short
 
     def _counted_by_the_map(self, where: str, binding: Binding) -> bool:
         """Whether driving to ``where`` only leads up to a count the map answers: the frame counts a class of the
