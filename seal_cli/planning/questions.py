@@ -53,8 +53,9 @@ from seal_cli.language.english import CHECK_WHETHER, WH_WORDS
 from seal_cli.language.values import Evoked, Parse, Phrase
 from seal_cli.planning.grounding import MapNames, Referent, Refusal, words_of
 
-__all__ = ["ANY_THING", "FACTS", "KINDS", "STATE_WORDS", "Question", "anything_there", "asks_where_every", "asks_whether", "fact_asked",
-           "looking", "name_asked", "put_to_person", "read_questions", "reports", "told_first"]
+__all__ = ["ANY_THING", "FACTS", "KINDS", "STATE_WORDS", "Question", "anything_there", "asks_where_every",
+           "asks_whether", "fact_asked", "looking", "name_asked", "put_to_person", "read_questions", "reports",
+           "told_first"]
 
 KINDS = ("where", "whether", "how_many", "what", "state", "fact", "report", "asked")
 

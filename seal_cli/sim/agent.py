@@ -1055,9 +1055,6 @@ class Agent:
         into its closed receptacles, the nearest first. An Outcome when none is there."""
         views = 0
         start = len(self.looks)
-        every = question is not None and question.every and not self.is_person(value)
-        short = self.look_where_kept(self.said(value), spots, self.class_of(value)) \
-            if every and (spots := self.kept_spots(value)) else []
         while self.resolve(value, binding, role) is None:
             if (stop := self.exhausted()) is not None:
                 return Fatal(False, stop, Reason.BUDGET)
