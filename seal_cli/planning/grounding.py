@@ -183,6 +183,10 @@ class MapNames:
         """The class of the thing the frame being grounded carries to the place its words name ("put the book on the
         shelf"), or None: of the places the words may call, one the map's priors keep such a thing on
         (:meth:`_kept_there`)."""
+        self.guessed = False
+        """Whether :attr:`robot_at` is a guess: where the map's prior says the thing carried most likely lies (``seal
+        run`` plans on the map without its objects); the nearest place from there is chosen for now, and the run
+        chooses again from where it finds the thing (:attr:`~seal_cli.planning.problem.Problem.nearest`)."""
         self.robot_at: tuple[tuple[float, float], str] | None = None
         """Where the robot will be when it sets off for the phrase being grounded, and how to say it ("where it takes
         the guitar"); None: where it starts. Of several places, the nearest is measured from there."""
@@ -420,8 +424,11 @@ class MapNames:
                                    f"{one.id},{which} the first the map lists; say its room or its number "
                                    f"('{one.id}') to choose")
             return one
-        self.chosen.setdefault(one.id, f"{said} {one.id},{which} the nearest the robot drives to from {there} "
-                               f"({lengths[best]:.1f} m); say its room or its number ('{one.id}') to choose")
+        again = " for now" if self.guessed else ""
+        then = "; it chooses again from where it finds one (seal plan chooses from where the map draws it)" \
+            if self.guessed else ""
+        self.chosen.setdefault(one.id, f"{said} {one.id}{again},{which} the nearest the robot drives to from {there} "
+                               f"({lengths[best]:.1f} m){then}; say its room or its number ('{one.id}') to choose")
         self.nearest_of.setdefault(one.id, tuple(r.id for r in among))
         return one
 

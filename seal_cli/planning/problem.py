@@ -968,6 +968,7 @@ def commanded_frames(parse: Parse, library: Library, things: Things) -> list[Bin
         for role in sorted(grounded, key=lambda r: r in CARRIED_TO):     # where a thing goes, once the thing is known
             if things.names is not None:
                 things.names.robot_at = _robot_at(frame, role, values, bindings, things)
+                things.names.guessed = things.names.robot_at is not None and things.names.robot_at[1].endswith(LIKELY)
                 things.names.carried = things.class_of(values["theme"][0]) \
                     if role in ("goal", "source") and values.get("theme") and _carried(frame, "theme") else None
             values[role] = _values(_sought_where(evoked, role, things, role in asked), earlier, things, parse.text,
@@ -977,6 +978,7 @@ def commanded_frames(parse: Parse, library: Library, things: Things) -> list[Bin
         if things.names is not None:
             things.names.robot_at = None
             things.names.carried = None
+            things.names.guessed = False
         back_later = False
         backs: dict[str, Phrase | None] = {r: p for r, p in evoked.elements.items() if back_unplaced(p)}
         goal = evoked.elements.get("goal")
@@ -1073,13 +1075,17 @@ def _robot_at(frame: Frame, role: str, values: Mapping[str, tuple[str, ...]], bi
         if len(source) == 1 and source[0] in things.points:     # "bring the mug from the kitchen to the sofa"
             return things.points[source[0]], f"{_at(source[0], things)}, where it takes the {what} from"
         if not source and (likely := _likely_place(theme[0], things)) is not None:   # seal run: no thing placed
-            return things.points[likely], f"{likely}, where a {what} most likely lies"
+            return things.points[likely], f"{likely}, where a {what} {LIKELY}"
     for binding in reversed(bindings):
         for action in reversed(binding.frame.actions):
             value = binding.elements.get(action.args[-1]) if action.name in MOVES and action.args else None
             if value in things.points:
                 return things.points[value], f"{_at(value, things)}, where the step before leaves it"
     return None
+
+
+LIKELY = "most likely lies"
+"""How :func:`_robot_at` says where it guessed the robot takes a thing from (the prior's likeliest place)."""
 
 
 def _likely_place(value: str, things: Things) -> str | None:

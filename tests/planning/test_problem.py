@@ -1126,3 +1126,49 @@ def test_back_into_one_of_several_places_is_the_one_it_came_from(library: Librar
     assert str(plan("put it in the cupboard", library, map=m, done=done).steps[-1]) == \
         "Place(theme=ball, goal=cupboard_1)"
 
+
+
+def test_a_place_word_is_weighed_by_where_the_priors_keep_what_is_carried_there(library: Library) -> None:
+    """e2e34: "put the book back on the shelf" on the library went to the storeroom's shelf, which keeps boxes, not to
+    a bookshelf, which the map's prior keeps books on. A place whose one-word name ends in the word (a bookshelf for
+    "the shelf") stands in when no place the word names best is one the priors keep the thing on; the word's own
+    place stands when they do ("put the box on the shelf")."""
+    assert _goals("put the book back on the shelf", library, "library") == ["bookshelf_1"]
+    assert _goals("put the book on the shelf in the office", library, "library") == ["bookshelf_4"]
+    assert _goals("take the box to the shelf", library, "library") == ["shelf_1"]
+    assert _goals("put the towel on the shelf", library, "library") == ["shelf_1"]     # no prior of towels there
+
+
+def test_a_done_command_takes_the_thing_its_words_say_so_back_is_where_that_one_lay(library: Library) -> None:
+    """e2e34: `--done 'take the book from bookshelf 2 to the office'` took the map's first book (the trolley's), so
+    "put it back" went to the trolley; a done command now takes the one it says, as a command does, in the plan and
+    in the world the run acts in."""
+    from seal_cli.maps.formats.map_server import load_map
+    from seal_cli.planning.aftermath import world_after
+
+    m = load_map(Path(__file__).resolve().parents[2] / "maps" / "library.yaml")
+    done = ["take the book from bookshelf 2 to the office"]
+    for said in ("put it back", "put it back on the shelf"):
+        problem = problem_of_text(said, library, map=m, done=done)
+        assert [b.elements.get("goal") for b in problem.commanded][-1] == "bookshelf_2"
+    from seal_cli.language.grounding import vocabulary_of_map
+    from seal_cli.planning.problem import Things, carry_out_done, parse_to_plan
+
+    things = Things(library.taxonomy, m)
+    carry_out_done([parse_to_plan(done[0], library, vocabulary_of_map(m))], library, things)
+    books = [o for o in world_after(m, things).objects if o.cls == "book"]
+    assert not any(o.inside == "bookshelf_2" for o in books) and any(o.inside == "trolley_1" for o in books)
+
+
+def test_a_goal_chosen_from_where_a_thing_most_likely_lies_is_said_to_be_chosen_for_now(library: Library) -> None:
+    """e2e34: the run plans before it knows where the thing lies, so its nearest of several places is a guess from
+    the prior's likeliest place, chosen again once it has found the thing; its warning says so, and that seal plan
+    chooses from where the map draws it."""
+    from seal_cli.maps.formats.map_server import load_map
+
+    m = load_map(Path(__file__).resolve().parents[2] / "maps" / "workshop.yaml")
+    guessed = problem_of_text("put the brush on the workbench", library, map=m.known()).warnings
+    assert any("chose workbench_1 for now, the nearest the robot drives to from table_1, where a brush most likely "
+               "lies" in w and "it chooses again from where it finds one" in w for w in guessed)
+    drawn = problem_of_text("put the brush on the workbench", library, map=m).warnings
+    assert any("chose workbench_2, the nearest the robot drives to from where it takes the brush" in w for w in drawn)

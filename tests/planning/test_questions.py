@@ -283,3 +283,23 @@ def test_a_kind_or_a_person_asked_of_somewhere_is_still_whether(library: Library
             continue
         assert [str(b) for b in commanded] == [frame]
         assert set(read_questions(parse, commanded, MapNames(m, library.taxonomy)).values()) == {Question("whether")}
+
+
+@pytest.mark.parametrize(("text", "every"), [
+    ("where are the cups?", True),
+    ("where can I find cups?", True),
+    ("where did you see the cups?", True),
+    ("where is the cup?", False),
+    ("where are my glasses?", False),        # a pair: one thing
+    ("where are my keys?", False),           # a person's keys: one bunch
+    ("where are the two cups?", False),      # those two
+    ("find the cups", False),                # a command, not a question of where
+])
+def test_a_where_question_of_a_kind_in_the_plural_asks_for_every_one(text: str, every: bool,
+                                                                      library: Library) -> None:
+    """e2e34: "where are the towels?" planned one Find per towel; it is one question whose answer says where each
+    one is."""
+    got = asked(text, library)
+    assert [q.every for _, q in got][:1] == [every]
+    if every:
+        assert got == [("Find(theme=cup)", Question("where", every=True))]

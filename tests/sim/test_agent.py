@@ -983,3 +983,20 @@ def test_a_message_passed_on_says_whose_it_is(library: Library, house: str, text
     agent, result = run_on_map(load_map(house), text, library, make_policy("sefm"), rng=np.random.default_rng(0))
     assert result.completed, result.reason
     assert said in [r.text for r in agent.records]
+
+
+def test_where_things_of_a_kind_are_is_answered_with_every_one_found_where_the_map_keeps_them(
+        library: Library) -> None:
+    """e2e34: "where are the cups?" planned a Find per cup and answered with the first one seen. It is one question:
+    the robot looks everywhere the map's prior keeps cups (the dining table, the counter, the cupboard: opened, and
+    left open to show the last one), and the answer says where each cup it knows of is."""
+    from seal_cli import pipeline
+    from seal_cli.maps.formats.map_server import load_map
+
+    agent, result = pipeline.run_on_map(load_map("flat"), "where are the cups?", library, make_policy("oracle"),
+                                        rng=np.random.default_rng(0))
+    texts = [r.text for r in agent.records]
+    assert result.completed and "looks where the map keeps cups: dining_table_1, counter_1, cupboard_1" in texts
+    assert result.answer is not None and [a.split(" is ")[0] for a in result.answer.split("; ")] == \
+        ["cup_1", "cup_2", "cup_3"] and "cup_3 is in cupboard_1 in the kitchen" in result.answer
+    assert texts.count("closed cupboard_1") == 0
