@@ -1538,9 +1538,9 @@ class Agent:
         if every and target is not None and target in self.known and not self.in_view(target):
             self.answer_every(value, short)     # it knows where each one is: no drive back to see one again
             n = sum(1 for k in self.known.values() if k.cls == self.class_of(value) and k.id in self.world.items)
-            said = f"knows where {counted(n, self.said(value))} {'is' if n == 1 else 'are'}"
-            self.say("act", said, action="search", args=[value], detail=True)
-            return Outcome(True, said)
+            knows = f"knows where {counted(n, self.said(value))} {'is' if n == 1 else 'are'}"
+            self.say("act", knows, action="search", args=[value], detail=True)
+            return Outcome(True, knows)
         if target is not None and target in self.known and not self.in_view(target):
             went = self.go_to(value, binding)     # seen before, from elsewhere: back to where it was seen
             if not went.ok:
