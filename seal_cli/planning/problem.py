@@ -998,8 +998,10 @@ def commanded_frames(parse: Parse, library: Library, things: Things) -> list[Bin
         for role in _counted_roles(frame):      # "count the cups": one Count of the class
             if role in values:
                 values[role] = (things.class_of(values[role][0]),)
-        if "theme" in values and (asks_whether(parse.text, evoked) or asks_where_every(parse.text, evoked)):
-            # "are there any cups ...?": one is enough; "where are the cups?": one question of the kind
+        if "theme" in values and (asks_whether(parse.text, evoked) or asks_where_every(parse.text, evoked)
+                                  and not set(values["theme"]) & things.people):
+            # "are there any cups ...?": one is enough; "where are the cups?": one question of the kind (but "where
+            # are the residents?" asks where each of the map's people the role names is: a Find each)
             values["theme"] = values["theme"][:1]
         storing = things.map is not None and stores(frame, evoked.lexical_unit)
         for element in frame.elements:      # (a storing unit's goal is where the thing is kept: _put_away)

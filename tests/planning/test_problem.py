@@ -1172,3 +1172,15 @@ def test_a_goal_chosen_from_where_a_thing_most_likely_lies_is_said_to_be_chosen_
                "lies" in w and "it chooses again from where it finds one" in w for w in guessed)
     drawn = problem_of_text("put the brush on the workbench", library, map=m).warnings
     assert any("chose workbench_2, the nearest the robot drives to from where it takes the brush" in w for w in drawn)
+
+
+def test_a_where_question_of_people_by_a_plural_role_seeks_each_of_them(library: Library) -> None:
+    """e2e34: one Find for "where are the cups?", but "where are the residents?" names two of the map's people, each
+    sought by name: a Find each, as before."""
+    from seal_cli.maps.formats.map_server import load_map
+
+    house = load_map(Path(__file__).resolve().parents[2] / "maps" / "carehome.yaml")
+    assert [str(b) for b in problem_of_text("where are the residents?", library, map=house).commanded] == \
+        ["Find(theme=edith)", "Find(theme=walter)"]
+    assert [str(b) for b in problem_of_text("where are the mugs?", library, map=house).commanded] == \
+        ["Find(theme=mug)"]
