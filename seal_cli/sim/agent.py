@@ -1535,9 +1535,8 @@ class Agent:
                     self.answer(no)
                 return ended
         target = self.resolve(value, binding, role)
-        if every and target is not None and target in self.known and not self.in_view(target):
-            self.answer_every(value, short)     # it knows where each one is: no drive back to see one again
-            n = sum(1 for k in self.known.values() if k.cls == self.class_of(value) and k.id in self.world.items)
+        if every and target is not None and not (target in self.known and self.in_view(target)):
+            n = self.answer_every(value, short)     # it knows where each one is: no drive back to see one again
             knows = f"knows where {counted(n, self.said(value))} {'is' if n == 1 else 'are'}"
             self.say("act", knows, action="search", args=[value], detail=True)
             return Outcome(True, knows)
@@ -1565,15 +1564,20 @@ class Agent:
             self.open_to_look(parent.id)
             self.look(quiet=True)
 
-    def answer_every(self, value: str, short: Sequence[str]) -> None:
-        """"Where are the towels?": where each thing of the kind the robot knows is (those it saw where the map
-        keeps them, on the way, or where it left them), in the map's order; and where it could not look."""
+    def answer_every(self, value: str, short: Sequence[str]) -> int:
+        """"Where are the towels?": where each thing of the kind the robot knows is (the one in its hand, those it
+        saw where the map keeps them, on the way, or where it left them), in the map's order; and where it could not
+        look. How many it said."""
         key = self.class_of(value)
-        for known in sorted((k for k in self.known.values() if k.cls == key and k.id in self.world.items),
-                            key=lambda k: list(self.world.items).index(k.id)):
-            self.answer(self.where_is(known.id))
+        held = self.held()
+        ids = {k.id for k in self.known.values() if k.cls == key and k.id in self.world.items}
+        ids |= {held.id} if held is not None and held.key == key else set()
+        order = list(self.world.items)
+        for item_id in sorted(ids, key=order.index):
+            self.answer(self.where_is(item_id))
         if short:
             self.answer(f"it could not look at {', '.join(short)}")
+        return len(ids)
 
     def _search_people(self, value: str, binding: Binding, ground: str, question: Question | None) -> Outcome:
         """Anyone in a room: look all over it, and go to the nearest person seen there (yes, and
