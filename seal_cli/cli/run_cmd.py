@@ -116,7 +116,7 @@ def unread_by_policies(option: str, names: Sequence[str], given: Callable[[str],
 
 
 def _policies_said(option: str, whys: tuple[tuple[str, tuple[str, str]], ...]) -> str:
-    """``--policy oracle, which knows ...``; of several, ``--policies oracle,coverage: oracle and coverage keep ...``."""
+    """`--policy oracle, which knows ...`; of several, `--policies oracle,coverage: oracle and coverage keep ...`."""
     if len(whys) == 1:
         name, (one, _) = whys[0]
         return f"{option} {name}, which {one}"
