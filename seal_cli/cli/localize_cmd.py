@@ -234,7 +234,8 @@ def localize(
 
             observers.append(PngDrawer(files["--png"]))
         classes = () if bindings else the_map.classes
-        sefm = SeFM(the_map, bindings, state, rng, SeFMConfig(particles=particles, memory=available_memory()), observers, classes=classes)
+        config = SeFMConfig(particles=particles, memory=available_memory())   # refused past it (rel33)
+        sefm = SeFM(the_map, bindings, state, rng, config, observers, classes=classes)
         runs = _known_only(runs, sefm.known_classes, the_map.name)
         sefm.follow(runs, steps)
         sefm.close()
