@@ -333,7 +333,7 @@ class _Later:
             terms: list[float] = []
             cls = self.stops[first].cls
             assert cls is not None
-            spread = np.bincount(self.samples[cls], minlength=len(self.distance)) / len(self.samples[cls])
+            spread: np.ndarray = np.bincount(self.samples[cls], minlength=len(self.distance)) / len(self.samples[cls])
             searched = 0
             for stop in self.stops[first + 1:]:
                 if stop.cls is None:
