@@ -316,6 +316,9 @@ def attacker_cases() -> Iterator[Case]:  # noqa: PLR0915 - one list of cases, re
     from seal_cli.bench.reliability_hostile32 import hostile32_cases
 
     yield from hostile32_cases()
+    from seal_cli.bench.reliability_hostile33 import hostile33_cases
+
+    yield from hostile33_cases()
 
 
 def hostile14_cases() -> Iterator[Case]:
