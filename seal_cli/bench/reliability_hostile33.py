@@ -26,8 +26,8 @@ robot: {pose: [2, 2, 0]}
 """A map of bounds alone that validates and runs ("bring me a cup")."""
 
 THINGS = ("laptop", "book", "scissors", "glue", "paint", "brush", "apron", "paper", "stapler", "key", "phone",
-          "tissues", "kettle", "mug", "milk", "sandwich", "apple", "ball", "whistle", "tambourine", "coat", "jumper", "soap",
-          "mop", "bucket", "box", "calculator", "register")
+          "tissues", "kettle", "mug", "milk", "sandwich", "apple", "ball", "whistle", "tambourine", "coat", "jumper",
+          "soap", "mop", "bucket", "box", "calculator", "register")
 BRINGS = ", ".join(f"bring the {thing} to {who}" for thing, who in zip(THINGS, ["Priya", "Helen", "Dan", "Lily", "me"]
                                                                        * 6, strict=False))
 """A command of 28 "bring" clauses, each of another thing the school has a prior of (709 characters)."""

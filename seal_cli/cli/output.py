@@ -375,6 +375,16 @@ def plot_cache(environ: MutableMapping[str, str] = os.environ) -> str | None:
     return f"MPLCONFIGDIR {given} is not a folder seal can write: matplotlib's cache is kept in {instead} instead"
 
 
+def own_renderers(environ: MutableMapping[str, str] = os.environ) -> None:
+    """The environment's switches of the libraries seal writes its files with, set for files (rel33): matplotlib
+    draws with Agg, whatever ``MPLBACKEND`` says (``MPLBACKEND=junk`` was a ``ValueError`` traceback on every
+    ``--png``; seal shows no window), and Rerun records what ``--rrd`` asks, whatever ``RERUN`` says (``RERUN=off``,
+    its switch for programs that log by default, made every ``--rrd`` a ``ValueError`` traceback: "No application
+    id found")."""
+    environ["MPLBACKEND"] = "agg"
+    environ.pop("RERUN", None)
+
+
 def printable_streams() -> None:
     """Standard output and error whose encoding cannot hold every character (``PYTHONIOENCODING=ascii``,
     a Latin-1 locale) write what they cannot hold as ``\\xe9`` escapes instead of failing the command
