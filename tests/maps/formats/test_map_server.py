@@ -408,8 +408,7 @@ def test_an_image_that_is_a_link_to_nothing_or_a_loop_says_so(tmp_path: Path) ->
         read_image_cells(tmp_path / "none.pgm")
 
 
-def test_priors_of_more_classes_than_the_bound_are_refused_at_the_first_past_it(tmp_path: Path,
-                                                                                monkeypatch: pytest.MonkeyPatch) -> None:
+def test_priors_of_more_classes_than_the_bound_are_refused(tmp_path: Path, monkeypatch: pytest.MonkeyPatch) -> None:
     """rel33: 100,000 prior classes ran ``seal localize`` past 300 s and 6 GB; refused at the first class past
     ``MAX_PRIOR_CLASSES`` (3 here), at its line and column."""
     import seal_cli.maps.formats.map_server as map_server
