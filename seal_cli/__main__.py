@@ -40,7 +40,7 @@ def main() -> None:
     enabled = gc.isenabled()
     gc.disable()
     try:
-        from seal_cli.cli.output import plot_cache, printable_streams, sane_sizes, whole_writes
+        from seal_cli.cli.output import own_renderers, plot_cache, printable_streams, sane_sizes, whole_writes
         from seal_cli.fileio import note_interrupts
 
         note_interrupts()
@@ -48,6 +48,7 @@ def main() -> None:
         printable_streams()
         sane_sizes()
         said = plot_cache()
+        own_renderers()
         if said:
             sys.stderr.write(f"warning: {said}\n")
         from seal_cli.cli import main as run

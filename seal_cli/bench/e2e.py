@@ -141,6 +141,12 @@ def _load(path: Path) -> list[Case]:
                                                 for item in reader.items(value, f"case {number}'s {key}")) if v)
             else:
                 values[key] = reader.string(value, f"case {number}'s {key}")
+        text_node = fields["text"][1] if "text" in fields else None
+        if values.get("text") is not None and text_node is not None and not text_node.tag.endswith(":str"):
+            kind = text_node.tag.rsplit(":", 1)[-1]         # rel33: `text: 5` was scored as a plan missed
+            reader.problem(f"case {number}'s text {values['text']!r} is read by YAML as {kind}, not as a command: "
+                           "quote it if it is the command meant", text_node)
+            values["text"] = None
         if values.get("holding") is not None:  # a number there was a plan missed, not a problem of the file (hostile31)
             try:
                 check_class_name(values["holding"], f"case {number}'s holding")

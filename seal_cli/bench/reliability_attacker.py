@@ -316,6 +316,9 @@ def attacker_cases() -> Iterator[Case]:  # noqa: PLR0915 - one list of cases, re
     from seal_cli.bench.reliability_hostile32 import hostile32_cases
 
     yield from hostile32_cases()
+    from seal_cli.bench.reliability_hostile33 import hostile33_cases
+
+    yield from hostile33_cases()
 
 
 def hostile14_cases() -> Iterator[Case]:
@@ -1628,7 +1631,7 @@ def hostile29_cases() -> Iterator[Case]:  # noqa: PLR0915 - one list of cases, r
                ("localize", *studio, "--steps", "1", "--particles", "20", "--task", "go to the sofa", "--done",
                 "go to the bed", "--done", "qwzx"), codes=(1,), says=r"in --done 'qwzx'")
     # -- bench tasks --suite context_held_out ------------------------------------------------------------------------
-    held = ("bench", "tasks", "--suite", "context_held_out", "--policies", "oracle", "--particles", "20", "--jobs", "1")
+    held = ("bench", "tasks", "--suite", "context_held_out", "--policies", "oracle", "--jobs", "1")
     mug = (*held, "--command", "stir the mug", "--layouts", "1")
     yield Case("A bench tasks --suite context_held_out --data /dev/null", (*held, "--data", "/dev/null"), codes=(1,),
                says=r"--suite context_held_out does not read --data")
@@ -1886,7 +1889,7 @@ def hostile29_environment_cases() -> Iterator[Case]:
                env=(("LC_ALL", "C"), ("LANG", "C"), ("PYTHONUTF8", "0")), keep=("m.yaml",), says=r"ok: ")
     yield Case("A bench tasks --jobs 64 for one task", ("bench", "tasks", "--suite", "map", "--map", "studio",
                                                           "--command", "go to the sofa", "--layouts", "1",
-                                                          "--policies", "oracle", "--particles", "20", "--jobs", "64"),
+                                                          "--policies", "oracle", "--jobs", "64"),
                codes=(0,), says=r"(?s).", timeout=120)
 
 
@@ -1985,7 +1988,7 @@ def hostile30_leftover_cases() -> Iterator[Case]:  # noqa: PLR0915 - one list of
                codes=(0,), says=r"done: Go")
     # -- a benchmark's output where root cannot write ----------------------------------------------------------------
     tiny = ("bench", "tasks", "--suite", "map", "--map", "studio", "--command", "go to the sofa", "--layouts", "1",
-            "--policies", "oracle", "--particles", "20", "--jobs", "1", "--episodes")
+            "--policies", "oracle", "--jobs", "1", "--episodes")
     yield Case("A bench tasks --episodes into /proc", (*tiny, "/proc/e.jsonl"), codes=(1,),
                says=r"--episodes /proc/e\.jsonl: folder /proc does not take new files")
     yield Case("A bench tasks --episodes into /sys", (*tiny, "/sys/e.jsonl"), codes=(1,),

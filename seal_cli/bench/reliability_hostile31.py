@@ -63,8 +63,8 @@ def _sensor_and_name_cases() -> Iterator[Case]:  # noqa: PLR0915 - one list of c
         return (("a.yaml", apartment.replace(b"fov: 360}", f"fov: {fov}}}".encode())),
                 ("apartment.pgm", apartment_image))
     # -- a sensor's field of view of a sliver ----------------------------------------------------------------------
-    context = ("bench", "tasks", "--suite", "context", "--layouts", "1", "--policies", "oracle", "--particles", "20",
-               "--jobs", "1")
+    context = ("bench", "tasks", "--suite", "context", "--layouts", "1", "--policies", "oracle", "--jobs",
+               "1")
     yield Case("A bench tasks --suite context --fov 1e-300", (*context, "--fov", "1e-300"), codes=(1,),
                says=r"--fov 1e-300: degrees", timeout=60)
     yield Case("A bench tasks --suite context --fov 0.01", (*context, "--fov", "0.01"), codes=(1,),
@@ -96,7 +96,7 @@ def _sensor_and_name_cases() -> Iterator[Case]:  # noqa: PLR0915 - one list of c
                absent=("g.yaml",), says=r"--goals g\.yaml/")
     yield Case("A bench tasks --episodes whose name ends in /",
                ("bench", "tasks", "--suite", "map", "--map", "studio", "--command", "go to the sofa", "--layouts", "1",
-                "--policies", "oracle", "--particles", "20", "--jobs", "1", "--episodes", "e.jsonl/"), codes=(1,),
+                "--policies", "oracle", "--jobs", "1", "--episodes", "e.jsonl/"), codes=(1,),
                absent=("e.jsonl",), says=r"--episodes e\.jsonl/", timeout=120)
     yield Case("A localize --observations of a file named with a / after it", (*loc, "--observations", "o.yaml/"),
                (("o.yaml", obs),), codes=(1,), keep=("o.yaml",), says=r"--observations o\.yaml/")
@@ -204,7 +204,7 @@ def _labels_verbs_and_numbers_cases() -> Iterator[Case]:  # noqa: PLR0915 - one 
                says=r"--clock: '12:00\\x1b\[2J' is no time", unsaid=RAW)
     yield Case("A bench tasks --seed past 2**64", ("bench", "tasks", "--suite", "map", "--map", "studio", "--command",
                                                   "go to the sofa", "--layouts", "1", "--policies", "oracle",
-                                                  "--particles", "20", "--jobs", "1", "--seed", str(2**64 + 1)),
+                                                  "--jobs", "1", "--seed", str(2**64 + 1)),
                codes=(0,), says=r"(?s).", timeout=120)
     yield Case("A localize --seed of 2**128 + 1", ("localize", "--map", "apartment", "--task", "go to the kitchen",
                                                    "--steps", "1", "--particles", "20", "--seed", str(2**128 + 1)),

@@ -173,6 +173,7 @@ def localize(
     from seal_cli.errors import SealError
     from seal_cli.fileio import Outputs
     from seal_cli.frames.reading import load_library
+    from seal_cli.machine import available_memory
     from seal_cli.maps.formats.map_server import load_map
     from seal_cli.pipeline import frames_to_localise
     from seal_cli.planning.problem import naming_done
@@ -233,7 +234,8 @@ def localize(
 
             observers.append(PngDrawer(files["--png"]))
         classes = () if bindings else the_map.classes
-        sefm = SeFM(the_map, bindings, state, rng, SeFMConfig(particles=particles), observers, classes=classes)
+        config = SeFMConfig(particles=particles, memory=available_memory())   # refused past it (rel33)
+        sefm = SeFM(the_map, bindings, state, rng, config, observers, classes=classes)
         runs = _known_only(runs, sefm.known_classes, the_map.name)
         sefm.follow(runs, steps)
         sefm.close()

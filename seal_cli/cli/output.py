@@ -273,11 +273,50 @@ def progress_bar(what: str, total: int | None = None) -> Iterator[Callable[[int,
         TimeRemainingColumn,
     )
 
+    if not err.is_terminal:      # a log (a pipe, a file, CI): a line now and then once a run is long (rel33)
+        yield Heartbeat(what)
+        return
     with Progress(TextColumn(what), BarColumn(), MofNCompleteColumn(), TimeElapsedColumn(), TextColumn("left"),
-                  TimeRemainingColumn(), console=err.console, transient=True,
-                  disable=not err.is_terminal) as progress:
+                  TimeRemainingColumn(), console=err.console, transient=True) as progress:
         bar = progress.add_task(what, total=total)
         yield lambda done, total: progress.update(bar, completed=done, total=total)
+
+
+HEARTBEAT_S = 60.0
+"""Seconds between two progress lines of a long run whose stderr is no terminal (the first after as long)."""
+
+
+class Heartbeat:
+    """``advance(done, total)`` that says, on a stderr that is no terminal, how far a long run is, at most once
+    every :data:`HEARTBEAT_S` seconds: ``updates: 1,200 of 100,020 after 1 min 0 s, about 83 h 20 min left
+    (Ctrl-C stops it and writes nothing)``. A run shorter than that says nothing (tests and scripts see no
+    line); ``seal localize --steps 100000`` in a log said nothing for hours (rel33)."""
+
+    def __init__(self, what: str, every: float = HEARTBEAT_S, clock: Callable[[], float] | None = None) -> None:
+        import time
+
+        self.what, self.every, self.clock = what, every, clock or time.monotonic
+        self.start = self.last = self.clock()
+
+    def __call__(self, done: int, total: int) -> None:
+        now = self.clock()
+        if now - self.last < self.every or done <= 0:
+            return
+        self.last = now
+        spent = now - self.start
+        left = f", about {_duration(spent * (total - done) / done)} left" if total and done < total else ""
+        err.print(f"{self.what}: {done:,} of {total:,} after {_duration(spent)}{left} (Ctrl-C stops it and writes "
+                  "nothing)", markup=False, highlight=False)
+
+
+def _duration(seconds: float) -> str:
+    """``3 h 20 min``, ``1 min 5 s``, ``42 s``."""
+    whole = int(round(seconds))
+    hours, rest = divmod(whole, 3600)
+    minutes, secs = divmod(rest, 60)
+    if hours:
+        return f"{hours:,} h {minutes} min"
+    return f"{minutes} min {secs} s" if minutes else f"{secs} s"
 
 
 def _unicode(stream: Any) -> bool:
@@ -334,6 +373,16 @@ def plot_cache(environ: MutableMapping[str, str] = os.environ) -> str | None:
     instead = folder / "matplotlib"
     environ["MPLCONFIGDIR"] = str(instead)
     return f"MPLCONFIGDIR {given} is not a folder seal can write: matplotlib's cache is kept in {instead} instead"
+
+
+def own_renderers(environ: MutableMapping[str, str] = os.environ) -> None:
+    """The environment's switches of the libraries seal writes its files with, set for files (rel33): matplotlib
+    draws with Agg, whatever ``MPLBACKEND`` says (``MPLBACKEND=junk`` was a ``ValueError`` traceback on every
+    ``--png``; seal shows no window), and Rerun records what ``--rrd`` asks, whatever ``RERUN`` says (``RERUN=off``,
+    its switch for programs that log by default, made every ``--rrd`` a ``ValueError`` traceback: "No application
+    id found")."""
+    environ["MPLBACKEND"] = "agg"
+    environ.pop("RERUN", None)
 
 
 def printable_streams() -> None:

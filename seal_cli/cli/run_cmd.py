@@ -3,7 +3,7 @@
 from __future__ import annotations
 
 import os
-from collections.abc import Callable
+from collections.abc import Callable, Sequence
 from datetime import datetime
 from pathlib import Path
 from typing import Any
@@ -66,37 +66,65 @@ def _unread_options(suite: str, given: Callable[[str], bool]) -> None:
         raise SealError(f"--suite {suite} does not read {', '.join(o for o, _ in unread)}: {said}")
 
 
-def _unread_by_policy(policy: str, given: Callable[[str], bool]) -> None:
-    """Refuse the options of ``seal run`` given on the command line (``given(parameter)``) that ``--policy`` never
-    reads, before any work (hostile32): ``--policy oracle --search-end 0.5`` was taken and nothing done with it (the
-    oracle knows where everything is: it never searches); so was ``--particles`` of a policy that keeps no particles
-    (oracle, coverage, prior_optimal, frame_dp, saycan) and ``--clock``, ``--vocabulary`` and ``--search-end`` of
-    saycan, which runs from the text alone (its ``--rrd``, ``--png`` and ``--done`` are refused where it runs)."""
+POLICY_OPTIONS = {"particles": "--particles", "search_end": "--search-end", "clock": "--clock",
+                  "vocabulary_file": "--vocabulary"}
+"""The options of ``seal run`` and ``seal bench tasks`` that some policies never read (parameter: option)."""
+
+_TEXT_ALONE = ("runs from the instruction text alone, with no clock, vocabulary or search of seal's",
+               "run from the instruction text alone, with no clock, vocabulary or search of seal's")
+
+
+def _why_unread(parameter: str, searcher: Any) -> tuple[str, str] | None:
+    """Why a policy (its class) never reads the option of ``parameter``, said of one policy and of several; None if
+    it reads it."""
+    itself = getattr(searcher, "drives_itself", False)
+    if parameter == "particles" and not searcher.keeps_particles:
+        keeping = ", ".join(name for name, e in POLICIES.items() if e.load().keeps_particles)
+        return (f"keeps no particle beliefs (--particles goes with {keeping})",
+                f"keep no particle beliefs (--particles goes with {keeping})")
+    if parameter == "search_end" and searcher.oracle:
+        return ("knows where everything is and never searches", "know where everything is and never search")
+    if parameter in ("search_end", "clock", "vocabulary_file") and itself:
+        return _TEXT_ALONE
+    return None
+
+
+def unread_by_policies(option: str, names: Sequence[str], given: Callable[[str], bool]) -> None:
+    """Refuse, before any work, each option of :data:`POLICY_OPTIONS` given on the command line (``given(parameter)``)
+    that no policy of ``names`` reads (``option``: ``--policy`` of ``seal run``, ``--policies`` of ``bench tasks``,
+    whose list may mix policies: an option one of them reads stays). hostile32: ``run --policy oracle --search-end
+    0.5`` was taken and nothing done with it (the oracle never searches); so was ``--particles`` of a policy that keeps
+    no particles (oracle, coverage, prior_optimal, frame_dp, saycan) and ``--clock``, ``--vocabulary`` and
+    ``--search-end`` of saycan, which runs from the text alone (its ``--rrd``, ``--png`` and ``--done`` are refused
+    where it runs). rel33: ``bench tasks --policies oracle --particles 20`` too, by the same rule."""
     from seal_cli.errors import SealError
 
-    entry = POLICIES.get(policy)
-    if entry is None:           # an unknown policy: make_policy says so, with the known ones
+    if not names or any(name not in POLICIES for name in names):   # make_policy / choices name the known ones
         return
-    searcher = entry.load()
-    itself = getattr(searcher, "drives_itself", False)
-    text_alone = "runs from the instruction text alone, with no clock, vocabulary or search of seal's"
-    unread = []
-    if given("particles") and not searcher.keeps_particles:
-        keeping = [name for name, e in POLICIES.items() if e.load().keeps_particles]
-        unread.append(("--particles", f"keeps no particle beliefs (--particles goes with {', '.join(keeping)})"))
-    if given("search_end") and (searcher.oracle or itself):
-        unread.append(("--search-end", "knows where everything is and never searches" if searcher.oracle
-                       else text_alone))
-    for name, option in (("clock", "--clock"), ("vocabulary_file", "--vocabulary")):
-        if itself and given(name):
-            unread.append((option, text_alone))
-    if unread:
-        by_why: dict[str, list[str]] = {}
-        for option, why in unread:
-            by_why.setdefault(why, []).append(option)
-        said = "; ".join(f"{' and '.join(options)} {'is' if len(options) == 1 else 'are'} not read by --policy "
-                         f"{policy}, which {why}" for why, options in by_why.items())
-        raise SealError(f"{said}: leave {'it' if len(unread) == 1 else 'them'} out")
+    loaded = {name: POLICIES[name].load() for name in dict.fromkeys(names)}
+    groups: dict[tuple[tuple[str, tuple[str, str]], ...], list[str]] = {}
+    for parameter, flag in POLICY_OPTIONS.items():
+        whys = {name: _why_unread(parameter, searcher) for name, searcher in loaded.items()} if given(parameter) \
+            else {}
+        if whys and all(whys.values()):
+            groups.setdefault(tuple((n, w) for n, w in whys.items() if w), []).append(flag)
+    if groups:
+        said = "; ".join(f"{' and '.join(flags)} {'is' if len(flags) == 1 else 'are'} not read by "
+                         f"{_policies_said(option, whys)}" for whys, flags in groups.items())
+        count = sum(len(flags) for flags in groups.values())
+        raise SealError(f"{said}: leave {'it' if count == 1 else 'them'} out")
+
+
+def _policies_said(option: str, whys: tuple[tuple[str, tuple[str, str]], ...]) -> str:
+    """`--policy oracle, which knows ...`; of several, `--policies oracle,coverage: oracle and coverage keep ...`."""
+    if len(whys) == 1:
+        name, (one, _) = whys[0]
+        return f"{option} {name}, which {one}"
+    by_why: dict[tuple[str, str], list[str]] = {}
+    for name, why in whys:
+        by_why.setdefault(why, []).append(name)
+    return f"{option} {','.join(n for n, _ in whys)}: " + "; ".join(
+        f"{' and '.join(names)} {one if len(names) == 1 else several}" for (one, several), names in by_why.items())
 
 
 KIND_STYLE = {"warn": "yellow", "plan": "bold", "frame": "bold cyan", "search": "yellow", "go": "", "see": "green",
@@ -171,7 +199,7 @@ def run(
     from seal_cli.sim.agent import Budget
     from seal_cli.sim.policies import make_policy
 
-    _unread_by_policy(policy, given)
+    unread_by_policies("--policy", [policy], given)
     held = one_held(holding)
     start_clock = read_clock(clock)
     library = load_library(framelib_paths(framelib))
@@ -327,6 +355,7 @@ def tasks(
     if backend not in ("process", "ray") or (backend == "ray" and suite != "alfred2d"):
         raise SealError(f"--backend {backend!r}: process, or ray with --suite alfred2d")
     _unread_options(suite, given)
+    unread_by_policies("--policies", names, given)
     if fov is not None and not fov_ok(fov):      # NaN too
         raise SealError(f"--fov {fov:g}: {FOV_RANGE}")
     if suite == "context_all":

@@ -23,16 +23,23 @@ __all__ = ["LABEL", "LEGEND_CHARS", "MARGIN", "NAME_CHARS", "ROOM_CHARS", "TITLE
 _Drawing = TypeVar("_Drawing", bound=Callable[..., Any])
 
 
+UNSET = ("backend", "backend_fallback", "interactive")
+"""Settings of matplotlib's own that :func:`text_as_written` leaves as they are (the backend is Agg: ``__main__``)."""
+
+
 def text_as_written(draw: _Drawing) -> _Drawing:
-    """``draw`` (a function that makes a picture) with every text of its figures written as it is: matplotlib
-    reads a text with two ``$`` in it as mathematics, so a room, place, class or map called ``$x^$`` (any name a
-    file gives) failed the picture with a ``ParseSyntaxException`` traceback, and ``cost $5 or $6`` was drawn as
-    italics."""
+    """``draw`` (a function that makes a picture) with every text of its figures written as it is, on matplotlib's
+    own defaults: matplotlib reads a text with two ``$`` in it as mathematics, so a room, place, class or map called
+    ``$x^$`` (any name a file gives) failed the picture with a ``ParseSyntaxException`` traceback, and ``cost $5 or
+    $6`` was drawn as italics. A ``matplotlibrc`` in the working folder (or ``MATPLOTLIBRC``, ``MPLCONFIGDIR``'s)
+    is not read for seal's pictures (rel33): ``text.usetex: True`` without LaTeX was a ``RuntimeError`` traceback,
+    ``savefig.dpi: 100000`` ran out of memory, and the same map drew another picture in another folder."""
     @functools.wraps(draw)
     def drawn(*args: Any, **kwargs: Any) -> Any:
         import matplotlib
 
-        with matplotlib.rc_context({"text.parse_math": False}):
+        own = {k: v for k, v in matplotlib.rcParamsDefault.items() if k not in UNSET}
+        with matplotlib.rc_context({**own, "text.parse_math": False}):
             return draw(*args, **kwargs)
 
     return cast(_Drawing, drawn)

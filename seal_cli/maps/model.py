@@ -71,6 +71,11 @@ MAX_LISTED = 10_000
 """The most rooms, places, objects or people a map may list (a real building has tens to hundreds): checking a map
 grows with them, and 40,000 rooms of 1 m² took over a minute to validate, 100,000 places two minutes to run
 (hostile26); a longer list is refused at its first item past the bound."""
+MAX_PRIOR_CLASSES = 2_000
+"""The most classes a map's ``priors:`` may name (a building's things are of tens or hundreds of classes): each is a
+belief of its own in ``seal localize`` and a prior summed over the free cells (about 3 ms and 0.3 MB a class); a map
+of 100,000 prior classes (2.3 MB) took 30 s of CPU to ``seal map`` and ``seal localize`` ran past 300 s and 6 GB
+(rel33). Refused at the first class past the bound."""
 MAX_ROOM_VERTICES = 10_000
 """The most points a room's polygon may have (real outlines have tens): a map's checks and each cell's room
 grow with them (a room of 62,831 points took 15 GB before the edges' crossing test swept by x)."""

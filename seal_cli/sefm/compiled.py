@@ -32,10 +32,10 @@ def kernels() -> ModuleType | None:
 
     try:
         from seal_cli.sefm import _jit
-    except ImportError:
+    except Exception:   # not installed, or refused by its environment (NUMBA_NUM_THREADS=0 is a ValueError, rel33)
         if interrupted():  # a SIGINT inside numba's import comes out as "ImportError: initialization failed"
             raise KeyboardInterrupt from None
-        return None
+        return None     # numpy's passes: the same numbers bit for bit
     _jit.warm()
     if interrupted():  # one inside LLVM's callbacks while compiling was dropped there (fileio.note_interrupts)
         raise KeyboardInterrupt

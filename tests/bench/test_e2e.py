@@ -131,3 +131,13 @@ def test_a_cases_map_is_found_from_the_suite_inside_its_folder_or_seals_maps(tmp
             load(name)
     with pytest.raises(SealError, match=r"e\.yaml:2:\d+: case 1: no map 'm\.yaml'"):
         load("m.yaml")
+
+
+def test_a_case_text_yaml_reads_as_a_number_is_refused_at_it(tmp_path: Path) -> None:
+    """``text: 5`` was scored as a plan missed (rel33); a quoted "5" is a command (which the parser then refuses)."""
+    suite = tmp_path / "e.yaml"
+    suite.write_text("cases:\n  - {map: studio, text: 5, plan: [Go(goal=sofa_1)]}\n", encoding="utf-8")
+    with pytest.raises((SealError, SealErrors), match=r"e\.yaml:2:25: case 1's text '5' is read by YAML as int"):
+        load_cases(suite)
+    suite.write_text("cases:\n  - {map: studio, text: '5', refused: command}\n", encoding="utf-8")
+    assert [c.text for c in load_cases(suite)] == ["5"]

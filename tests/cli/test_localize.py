@@ -269,3 +269,34 @@ def test_a_real_robots_run_a_chair_in_its_way_and_a_detector_of_many_classes(tmp
     result = runner.invoke(app, ["localize", "--map", str(tmp_path / "room.yaml"), "--task", "grasp the cup",
                                  "--observations", str(seen)])
     assert result.exit_code == 1 and "more than 0.3 m from any free cell" in result.stderr
+
+
+def test_a_localize_past_the_machines_memory_is_refused_with_the_figure(monkeypatch: pytest.MonkeyPatch,
+                                                                       tmp_path: Path) -> None:
+    """rel33: the memory a request needs is weighed against what the machine has before anything is drawn; the
+    outputs asked for are not written."""
+    import seal_cli.machine
+
+    monkeypatch.setattr(seal_cli.machine, "available_memory", lambda: 320 * 2**20)
+    png = tmp_path / "o.png"
+    result = runner.invoke(app, ["localize", "--map", "apartment", "--task", "stir the cup", "--particles", "100000",
+                                 "--steps", "1", "--png", str(png)])
+    assert result.exit_code == 1, result.output
+    assert "100,000 particles for each of" in result.output and "GiB is available: give --particles" in result.output
+    assert not png.exists() and list(tmp_path.iterdir()) == []
+
+
+def test_a_long_run_in_a_log_says_how_far_it_is_now_and_then(capsys: pytest.CaptureFixture[str]) -> None:
+    """A stderr that is no terminal gets a line at most every HEARTBEAT_S seconds (none for a short run)."""
+    from seal_cli.cli.output import Heartbeat
+
+    now = [0.0]
+    beat = Heartbeat("updates", every=60.0, clock=lambda: now[0])
+    beat(10, 100_020)
+    now[0] = 61.0
+    beat(1_200, 100_020)
+    now[0] = 70.0
+    beat(1_300, 100_020)                 # within the minute: nothing more
+    said = capsys.readouterr().err
+    assert said.count("\n") == 1
+    assert "updates: 1,200 of 100,020 after 1 min 1 s, about 1 h 23 min left (Ctrl-C stops it" in said

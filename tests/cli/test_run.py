@@ -247,3 +247,32 @@ def test_the_options_a_policy_reads_stay() -> None:
                             ("coverage", ["--search-end", "0.5"]), ("oracle", ["--clock", "10:00"])):
         result = runner.invoke(app, ["run", "go to the sofa", "--map", "studio", "--policy", policy, *options])
         assert result.exit_code == 0 and "done: Go(goal=sofa_1)" in result.output, (policy, result.output)
+
+
+@pytest.mark.parametrize(("policies", "says"), [
+    ("oracle", "--particles is not read by --policies oracle, which keeps no particle beliefs (--particles goes with "
+               "sefm, object_only, uniform): leave it out"),
+    ("oracle,coverage,prior_optimal", "--particles is not read by --policies oracle,coverage,prior_optimal: oracle "
+                                      "and coverage and prior_optimal keep no particle beliefs"),
+])
+def test_bench_tasks_refuses_particles_no_listed_policy_reads(policies: str, says: str, tmp_path: Path) -> None:
+    """``bench tasks --policies oracle --particles 20`` was taken though no policy listed keeps particles (rel33):
+    refused by the rule ``seal run``'s ``--policy`` has, before any work (no ``--episodes`` written)."""
+    episodes = tmp_path / "e.jsonl"
+    result = runner.invoke(app, ["bench", "tasks", "--suite", "map", "--map", "studio", "--command", "go to the sofa",
+                                 "--layouts", "1", "--policies", policies, "--particles", "20", "--jobs", "1",
+                                 "--episodes", str(episodes)])
+    assert result.exit_code == 1 and f"error: {says}" in result.output, result.output
+    assert not episodes.exists()
+
+
+def test_bench_tasks_keeps_particles_when_one_listed_policy_reads_them() -> None:
+    """A list may mix policies: ``--particles`` one of them reads stays (the others pass it over)."""
+    from seal_cli.cli.run_cmd import unread_by_policies
+    from seal_cli.errors import SealError
+
+    given = {"particles"}.__contains__
+    unread_by_policies("--policies", ["oracle", "object_only"], given)          # object_only reads it: no refusal
+    unread_by_policies("--policies", ["oracle"], lambda _: False)                # not given: nothing to refuse
+    with pytest.raises(SealError, match=r"--particles is not read by --policies oracle,coverage"):
+        unread_by_policies("--policies", ["oracle", "coverage"], given)

@@ -54,3 +54,26 @@ def test_a_map_of_100_character_names_draws_them_cut_within_the_figure(tmp_path:
         assert all(len(n) <= 32 for n in names) and all(t.get_clip_on() for t in ax.texts[:2])
     finally:
         plt.close(fig)
+
+
+def test_pictures_are_drawn_on_matplotlibs_own_defaults(monkeypatch: pytest.MonkeyPatch) -> None:
+    """A ``matplotlibrc`` of the working folder set ``text.usetex`` (a traceback without LaTeX) or ``savefig.dpi:
+    100000`` (out of memory) for seal's pictures (rel33): they are drawn on matplotlib's defaults."""
+    import matplotlib
+
+    from seal_cli.maps.drawing import text_as_written
+
+    monkeypatch.setitem(matplotlib.rcParams, "text.usetex", True)
+    monkeypatch.setitem(matplotlib.rcParams, "savefig.dpi", 100000)
+    seen = text_as_written(lambda: (matplotlib.rcParams["text.usetex"], matplotlib.rcParams["savefig.dpi"],
+                                    matplotlib.rcParams["text.parse_math"]))()
+    assert seen == (False, matplotlib.rcParamsDefault["savefig.dpi"], False)
+    assert matplotlib.rcParams["text.usetex"] is True          # the process's own settings are left as they were
+
+
+def test_the_renderers_switches_are_set_for_files() -> None:
+    from seal_cli.cli.output import own_renderers
+
+    environ = {"MPLBACKEND": "junk", "RERUN": "off", "HOME": "/h"}
+    own_renderers(environ)
+    assert environ == {"MPLBACKEND": "agg", "HOME": "/h"}

@@ -562,3 +562,21 @@ def test_a_spot_behind_a_beds_corner_is_not_counted_seen_by_a_look_whose_ray_fan
     share = float(sefm.objects.W[row][at].sum() / sefm.objects.W[row].sum())
     p = m.sensor.p_detect
     assert share == pytest.approx(1 / (1 + (1 - p)), abs=0.03)      # only the spot in view fell, by 1 − p
+
+
+def test_beliefs_past_the_memory_given_are_refused_saying_how_many_particles_fit(library: Library) -> None:
+    """``SeFMConfig.memory``: beliefs that would not fit are refused before anything is drawn (rel33: ``seal
+    localize`` gives the machine's available memory; 10,000 classes of 100,000 particles would take 150 GiB)."""
+    from seal_cli.errors import SealError
+    from seal_cli.sefm.filter import BASE_BYTES, BYTES_PER_PARTICLE, memory_needed
+
+    m = box_map()
+    assert memory_needed(2, 1000) == BASE_BYTES + 2 * 1000 * BYTES_PER_PARTICLE
+    limit = BASE_BYTES + 2 * 500 * BYTES_PER_PARTICLE          # room for 500 particles of the two classes
+    with pytest.raises(SealError, match=r"1,000 particles for each of 2 beliefs \(2 object classes and 0 frames\) "
+                                        r"need about .* GiB of memory, .* give --particles 500 or fewer"):
+        SeFM(m, [], cup_state(library), np.random.default_rng(0), SeFMConfig(particles=1000, memory=limit),
+             classes=["cup", "apple"])
+    fits = SeFM(m, [], cup_state(library), np.random.default_rng(0), SeFMConfig(particles=500, memory=limit),
+                classes=["cup", "apple"])
+    assert len(fits.object_classes) == 2

@@ -65,6 +65,7 @@ from seal_cli.maps.geometry import (
 from seal_cli.maps.model import (
     FOV_RANGE,
     MAX_LISTED,
+    MAX_PRIOR_CLASSES,
     Map,
     MapWarning,
     ObjectTruth,
@@ -687,6 +688,11 @@ class _Reader(NodeReader):
         priors: dict[str, dict[str, float]] = {}
         first: dict[str, str] = {}
         for cls, key_node, value in self.pairs_at(node, "priors", ("priors_raw",)):
+            if len(first) == MAX_PRIOR_CLASSES:   # rel33: 100,000 classes ran localize past 300 s and 6 GB
+                self.problem(f"this map's priors name more than {MAX_PRIOR_CLASSES:,} classes; seal reads at most that "
+                             "many (a building's things are of tens or hundreds of classes, and each is a belief of "
+                             "its own): keep the classes the tasks need, or merge kinds into one class", key_node)
+                break
             try:  # a class a place or an object could not have ("cu\0p" validated, hostile28)
                 key = check_class_name(cls, "the prior's class", self.where(key_node))
             except SealError as problem:

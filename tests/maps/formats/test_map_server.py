@@ -406,3 +406,19 @@ def test_an_image_that_is_a_link_to_nothing_or_a_loop_says_so(tmp_path: Path) ->
         read_image_cells(tmp_path / "a.pgm")
     with pytest.raises(SealError, match=r"image none\.pgm does not exist"):
         read_image_cells(tmp_path / "none.pgm")
+
+
+def test_priors_of_more_classes_than_the_bound_are_refused(tmp_path: Path, monkeypatch: pytest.MonkeyPatch) -> None:
+    """rel33: 100,000 prior classes ran ``seal localize`` past 300 s and 6 GB; refused at the first class past
+    ``MAX_PRIOR_CLASSES`` (3 here), at its line and column."""
+    import seal_cli.maps.formats.map_server as map_server
+
+    monkeypatch.setattr(map_server, "MAX_PRIOR_CLASSES", 3)
+    path = tmp_path / "m.yaml"
+    path.write_text("name: m\nbounds: [0, 0, 10, 10]\nrooms: [{name: kitchen, box: [0, 0, 10, 10]}]\npriors:\n"
+                    + "".join(f"  c{i}: {{kitchen: 1}}\n" for i in range(5)), encoding="utf-8")
+    with pytest.raises(SealError, match=r"m\.yaml:8:3: this map's priors name more than 3 classes"):
+        load_map(path)
+    path.write_text(path.read_text(encoding="utf-8").replace("  c3: {kitchen: 1}\n  c4: {kitchen: 1}\n", ""),
+                    encoding="utf-8")
+    assert len(load_map(path).priors) == 3
