@@ -1,6 +1,7 @@
 #!/usr/bin/env python3
 """Rebuild ``seal_cli/language/task_fields/alfred_train.json``: the task fields (type, object, receptacle, movable
-receptacle) ALFRED's *train* goal sentences say by their words (:mod:`seal_cli.language.taskfields`).
+receptacle; and sliced, given the type and object) ALFRED's *train* goal sentences say by their words
+(:mod:`seal_cli.language.taskfields`).
 
     python scripts/build_task_fields.py                  # rewrite the shipped model (fitted on all train trials)
     python scripts/build_task_fields.py --check          # exit 1 if the shipped model differs
@@ -17,7 +18,8 @@ round; then the weights learned on all of them are printed), by the likelihood (
 count of right values (``taskfields.fit_trust_count``). ``--l2`` and ``--min-rooms`` fit the words' model otherwise
 too (its L2 penalty; the least number of floor plans a word must have been said in with a value to weigh it), and
 ``--rooms S`` with each sentence weighed by how often its floor plan had the field's value (``chooser.room_weights``),
-and score each with the first trust (``--chooser-rooms S``: the word-class chooser fitted so too). Each row also gives
+and score each with the first trust (``--chooser-rooms S``: the word-class chooser fitted so too); ``--slice-add P
+...`` rereads with an unsaid Slice added at each probability P (``taskfields.SLICE_ADD`` ships). Each row also gives
 the 95 % interval of its all-five figure when the held-out floor plans (or trials) are drawn again (:func:`resampled`),
 and each row after the first reread the interval of its count of wrong sentences against that reread's: on 23
 floor plans a change of a few sentences is within it.
@@ -46,6 +48,7 @@ from seal_cli.language.taskfields import (  # noqa: E402
     FIELDS,
     L2,
     SHIPPED,
+    SLICE_ADD,
     TRUST,
     FieldModel,
     candidates,
@@ -184,6 +187,9 @@ def dev(args: argparse.Namespace, bwc: ModuleType, rows: list[dict[str, str]]) -
     for i, trust in enumerate(args.trusts):
         shown = "shipped" if trust == dict(TRUST) else ",".join(f"{trust[f]:g}" for f in FIELDS)
         show("reread, trust " + shown, lambda row, t=trust: replace(model, trust=t), keep=i == 0)
+    for least in args.slice_add:                   # the unsaid slice added at another probability
+        show(f"reread, slice added at {least:g}", lambda row, x=least: replace(model, trust=args.trusts[0],
+                                                                                 slice_add=x))
     for l2, rooms, spread in settings[1:]:         # the words' model fitted otherwise, with the first trust
         show(f"reread, l2 {l2:g}, min rooms {rooms}" + ("" if spread is None else f", rooms weighed {spread:g}"),
              lambda row, m=models[(l2, rooms, spread)]: replace(m, trust=args.trusts[0]))
@@ -272,6 +278,9 @@ def main() -> int:
                     help="with --dev: learn the combination on the held-out parses (each half scored by the other's) "
                          "and print the weights learned on all of them")
     ap.add_argument("--errors", type=Path, help="with --dev: write the held-out sentences scored wrong here (TSV)")
+    ap.add_argument("--slice-add", type=float, nargs="*", default=[],
+                    help="with --dev: also reread with an unsaid Slice added at each of these probabilities "
+                         f"(taskfields.SLICE_ADD: {SLICE_ADD:g} shipped; above 1: never)")
     ap.add_argument("--l2", type=float, nargs="+", default=[L2],
                     help="with --dev: the words' model's L2 penalties to try (the first with every --trust)")
     ap.add_argument("--min-rooms", type=int, nargs="+", default=[0],

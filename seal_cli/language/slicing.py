@@ -41,7 +41,7 @@ if TYPE_CHECKING:
     from seal_cli.language.grounding import Vocabulary
 
 __all__ = ["HANDLING", "KINDS", "SLICED", "THRESHOLD", "WHOLE", "SliceModel", "infer_slice", "said_bare",
-           "slice_features", "uncut"]
+           "slice_before", "slice_features", "uncut"]
 
 SLICED = "sliced"
 WHOLE = "whole"
@@ -128,6 +128,13 @@ def infer_slice(parse: Parse, library: Library, vocabulary: Vocabulary, model: S
     p = model.probability(slice_features(words, thing.cls, (f.frame for f in parse.frames), said_bare(thing)))
     if p < model.threshold:
         return parse
+    return slice_before(parse, at, library, vocabulary, p)
+
+
+def slice_before(parse: Parse, at: int, library: Library, vocabulary: Vocabulary, p: float) -> Parse:
+    """The parse with a Slice of the theme of its frame ``at`` added before that frame, marked inferred with
+    ``p`` (the library's Slice, its defaults grounded in ``vocabulary``; the later frames' references moved)."""
+    theme = parse.frames[at].elements["theme"]
     frame = library.frame("Slice")
     elements: dict[str, Phrase] = {"theme": moved_phrase(theme, at)}
     for e in frame.elements:

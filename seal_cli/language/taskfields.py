@@ -27,6 +27,14 @@ The bonus is one weight of a few features of each candidate value (:func:`candid
 learned on parses of held-out train sentences (:func:`fit_trust`, ``build_task_fields.py --dev 0.2 --learn``), but
 learned so they were no better than the hand-set bonuses (``docs/language.md``, alfred21), which stay shipped.
 
+**The fifth field, sliced**, is read last, once the type and object are chosen: P(sliced | the sentence's grams, the
+type, the object, the two together) (:func:`slice_grams`, :func:`sliced_probability`), fitted on train's tasks whose
+object is of a class train sliced (:attr:`FieldModel.sliceable`). A parse that says no cutting (and to which the
+unsaid-slice model, :mod:`~seal_cli.language.slicing`, added none) gets a Slice of the object, marked inferred, when
+the sliced value is the more probable (:data:`SLICE_ADD`): "put a bowl with an apple in it in the fridge" reads as the
+stack it is, and an apple moved in a container was sliced in 128 of train's 164 such stacks. A Slice said or
+inferred is never taken away.
+
 **What changes in the parse** (:func:`reread`): when the combined type is the parser's, only the classes of the
 phrases the parser read the fields from (the root of a pronoun's chain), when they differ; when it is another type
 (or a field has no phrase), the frames are written anew from the fields, the parser's phrases reused where they
@@ -59,6 +67,7 @@ from typing import TYPE_CHECKING
 from seal_cli.frames.taxonomy import class_key, class_words
 from seal_cli.language.chooser import Instance, fit, posterior, room_weights
 from seal_cli.language.reference import back_unplaced
+from seal_cli.language.slicing import slice_before, uncut
 from seal_cli.language.values import Evoked, Parse, Phrase
 
 if TYPE_CHECKING:
@@ -67,11 +76,18 @@ if TYPE_CHECKING:
 
 __all__ = ["FIELDS", "NOTHING", "SHIPPED", "TRUST", "FieldModel", "Reading", "candidates", "combine",
            "field_classes", "fit_fields", "fit_trust", "fit_trust_count", "label", "load_field_model", "read_fields",
-           "reread", "score", "sentence_grams", "shipped_field_model", "wanted"]
+           "reread", "score", "sentence_grams", "shipped_field_model", "slice_grams", "sliced_probability", "wanted"]
 
 SHIPPED = Path(__file__).parent / "task_fields" / "alfred_train.json"
 FIELDS = ("type", "object", "receptacle", "mrecep")
-"""The fields the model reads (sliced stays the parser's: its own model, :mod:`~seal_cli.language.slicing`)."""
+"""The fields the model reads and combines with the parser's reading (sliced: :data:`SLICED`)."""
+SLICED = "sliced"
+"""The fifth field, read after the others (:func:`slice_grams`): only ever a Slice added the parser left unsaid."""
+SLICE_VALUES = ("sliced", "whole")
+SLICE_ADD = 0.5
+"""The least probability of :data:`SLICED` at which a Slice the parse does not say is added: the more probable value,
+as every other field is decided (not tuned; 0.6 and 0.7 measured no better on held-out train floor plans:
+``build_task_fields.py --dev 0.2 --hold-out floor-plans --slice-add ...``)."""
 NOTHING = "none"
 """The value of a field the task has not (a look's receptacle, a movable receptacle of all but a stack)."""
 LOOK = "look_at_obj_in_light"
@@ -116,15 +132,26 @@ def sentence_grams(text: str) -> tuple[str, ...]:
     return tuple(sorted(grams))
 
 
+def slice_grams(grams: Iterable[str], kind: str, thing: str) -> tuple[str, ...]:
+    """The features of the sliced field: the sentence's ``grams`` (:func:`sentence_grams`) and the task read, its
+    type ``t:``, its object's class key ``o:`` and the two together ``to:`` ("put a bowl with an apple in it in the
+    fridge": an apple moved in a container was sliced in most of train's stacks, a cooled one in half)."""
+    return (*grams, f"t:{kind}", f"o:{thing}", f"to:{kind}|{thing}")
+
+
 @dataclass(frozen=True)
 class FieldModel:
     """For each field of :data:`FIELDS`, ``priors[field][value]`` (how often train tasks had it; a class key, a task
     type or :data:`NOTHING`) and ``weights[field][gram][value]``; ``trust``: the parser's bonus per field. Empty:
-    nothing is reread."""
+    nothing is reread. The sliced field (:data:`SLICED`, its values :data:`SLICE_VALUES`), when fitted, has its priors
+    and weights too, and ``sliceable``: the class keys of the objects train tasks sliced (no other is ever cut);
+    ``slice_add``: the least probability at which an unsaid Slice is added (:data:`SLICE_ADD`)."""
 
     priors: Mapping[str, Mapping[str, int]] = field(default_factory=dict)
     weights: Mapping[str, Mapping[str, Mapping[str, float]]] = field(default_factory=dict)
     trust: Mapping[str, float] = field(default_factory=lambda: dict(TRUST))
+    sliceable: frozenset[str] = frozenset()
+    slice_add: float = SLICE_ADD
 
     def __bool__(self) -> bool:
         return all(self.priors.get(f) for f in FIELDS)
@@ -135,6 +162,12 @@ class FieldModel:
         keep = None if allowed is None else set(allowed)
         keys = [k for k, n in prior.items() if n and (keep is None or k in keep)]
         return posterior(prior, self.weights.get(name, {}), keys, grams) if keys else {}
+
+
+def sliced_probability(model: FieldModel, grams: Iterable[str], kind: str, thing: str) -> float:
+    """P(the object is sliced | the sentence's grams, the task's type ``kind`` and object ``thing``): 0.0 when the
+    model has no sliced field."""
+    return model.probabilities(SLICED, slice_grams(grams, kind, thing)).get(SLICE_VALUES[0], 0.0)
 
 
 @dataclass(frozen=True)
@@ -443,17 +476,35 @@ def reread(parse: Parse, library: Library, vocabulary: Vocabulary, model: FieldM
         return parse
     reading = read_fields(parse)
     present = vocabulary.by_key
-    fields, chance = combine(model, sentence_grams(text), reading, present, field_classes(parse, reading, vocabulary))
+    grams = sentence_grams(text)
+    fields, chance = combine(model, grams, reading, present, field_classes(parse, reading, vocabulary))
     if fields["type"] == LOOK == reading.type and not any(f.frame in MANIPULATE for f in parse.frames):
         looked = _looked_at(parse, library, fields, chance)    # the thing only found or carried to the lamp
         if looked is not None:
             return looked
     if fields["type"] == reading.type and all(reading.at[n] is not None or fields[n] == NOTHING
                                               for n in ("object", "receptacle", "mrecep")):
-        return _reclassed(parse, reading, fields, present)
-    if not all(f.frame in TASK_FRAMES for f in parse.frames) or _coordinated(parse, reading):
-        return _reclassed(parse, reading, fields, present)   # never drop a frame no field holds ("find the clock"),
-    return _written(parse, library, vocabulary, reading, fields, present, chance)  # nor a thing said beside another
+        out = _reclassed(parse, reading, fields, present)
+    elif not all(f.frame in TASK_FRAMES for f in parse.frames) or _coordinated(parse, reading):
+        out = _reclassed(parse, reading, fields, present)   # never drop a frame no field holds ("find the clock"),
+    else:                                                   # nor a thing said beside another
+        out = _written(parse, library, vocabulary, reading, fields, present, chance)
+    return _cut(out, library, vocabulary, model, grams, fields)
+
+
+def _cut(parse: Parse, library: Library, vocabulary: Vocabulary, model: FieldModel, grams: Sequence[str],
+         fields: Mapping[str, str]) -> Parse:
+    """The parse with a Slice of the object added before the first frame that handles it, marked inferred, when the
+    parse says none (nor inferred one: :func:`~seal_cli.language.slicing.uncut`), its object is the fields' and of a
+    class train tasks sliced, and :func:`sliced_probability` given the fields' type and object is at least
+    :attr:`FieldModel.slice_add`; else the parse unchanged. A Slice said or inferred before is never taken away."""
+    if fields["object"] not in model.sliceable or "Slice" not in library or not model.priors.get(SLICED):
+        return parse
+    at = uncut(parse, model.sliceable)
+    if at is None or class_key(parse.resolve(parse.frames[at].elements["theme"]).cls or "") != fields["object"]:
+        return parse
+    p = sliced_probability(model, grams, fields["type"], fields["object"])
+    return slice_before(parse, at, library, vocabulary, p) if p >= model.slice_add else parse
 
 
 def _coordinated(parse: Parse, reading: Reading) -> bool:
@@ -612,7 +663,27 @@ def fit_fields(rows: Sequence[Mapping[str, str]], l2: float = L2, trust: Mapping
                             groups=rooms, min_groups=min_rooms,
                             weights=None if spread is None else room_weights(list(zip(rooms, labels, strict=True)),
                                                                              spread))
-    return FieldModel(priors, weights, trust)
+    sliceable = _sliceable(rows)
+    cut = [(r, g) for r, g in zip(rows, grams, strict=True) if class_key(r.get("object") or "") in sliceable]
+    said = [SLICE_VALUES[0] if _is_sliced(r) else SLICE_VALUES[1] for r, _ in cut]
+    counts = Counter(said)
+    if all(counts[v] for v in SLICE_VALUES):
+        offsets = tuple(math.log(counts[v]) for v in SLICE_VALUES)
+        priors[SLICED] = {v: counts[v] for v in SLICE_VALUES}
+        weights[SLICED] = fit([Instance(SLICE_VALUES, offsets, SLICE_VALUES.index(v),
+                                        slice_grams(g, r["task_type"], class_key(r["object"])))
+                               for v, (r, g) in zip(said, cut, strict=True)],
+                              l2=l2, min_count=MIN_COUNT, digits=2, min_label=MIN_COUNT)
+    return FieldModel(priors, weights, trust, sliceable if SLICED in priors else frozenset())
+
+
+def _is_sliced(row: Mapping[str, str]) -> bool:
+    return row.get("sliced") in ("1", "True", "true")
+
+
+def _sliceable(rows: Sequence[Mapping[str, str]]) -> frozenset[str]:
+    """The class keys of the objects the rows' tasks sliced."""
+    return frozenset(class_key(r["object"]) for r in rows if _is_sliced(r) and r.get("object"))
 
 
 def label(row: Mapping[str, str], name: str) -> str:
@@ -626,7 +697,9 @@ def label(row: Mapping[str, str], name: str) -> str:
 def model_json(model: FieldModel, source: str) -> str:
     """The model as the shipped file's text (one line per field's section, sorted)."""
     data = {"format": "seal-task-fields-1", "source": source, "trust": dict(model.trust),
-            "priors": {n: dict(model.priors[n]) for n in FIELDS}, "weights": {n: model.weights[n] for n in FIELDS}}
+            "priors": {n: dict(model.priors[n]) for n in (*FIELDS, SLICED) if n in model.priors},
+            "weights": {n: model.weights[n] for n in (*FIELDS, SLICED) if n in model.weights},
+            **({"sliceable": sorted(model.sliceable)} if model.sliceable else {})}
     return json.dumps(data, sort_keys=True, separators=(",", ":")) + "\n"
 
 
@@ -644,13 +717,19 @@ def load_field_model(path: Path) -> FieldModel:
             for k in ("priors", "weights")):
         raise SealError("not a task-field model (format seal-task-fields-1: priors and weights of type, object, "
                         "receptacle, mrecep)", Where(str(path)))
+    sliceable = data.get("sliceable", [])
+    if not all(isinstance(data[k].get(SLICED, {}), dict) for k in ("priors", "weights")) \
+            or not isinstance(sliceable, list) or not all(isinstance(k, str) for k in sliceable):
+        raise SealError(f"{SLICED}: expected its priors and weights as objects, and sliceable as a list of class keys",
+                        Where(str(path)))
     said = data.get("trust")
     trust: Mapping[str, float] = said if isinstance(said, dict) else TRUST
     if not all(isinstance(v, int | float) and not isinstance(v, bool) for v in trust.values()):
         raise SealError("trust: expected a number for each weight (" + ", ".join(FIELDS) + ", ...)",
                         Where(str(path)))
     return FieldModel(data["priors"], data["weights"],
-                      {**{n: float(TRUST.get(n, 0.0)) for n in FIELDS}, **{k: float(v) for k, v in trust.items()}})
+                      {**{n: float(TRUST.get(n, 0.0)) for n in FIELDS}, **{k: float(v) for k, v in trust.items()}},
+                      frozenset(sliceable))
 
 
 @cache

@@ -30,6 +30,7 @@ from seal_cli.language.taskfields import (
     score,
     sentence_grams,
     shipped_field_model,
+    sliced_probability,
 )
 from seal_cli.language.wordusage import WordUsage
 
@@ -359,3 +360,42 @@ def test_a_thing_said_beside_another_is_never_dropped_by_frames_written_anew(lib
     text = "put the frosty apple on the counter"                # one thing: written anew as before
     vocabulary, parse = parsed(text, library)
     assert [f.frame for f in reread(parse, library, vocabulary, MODEL, text).frames] == ["Pick", "Cool", "Place"]
+
+
+CUT = FieldModel(PRIORS | {"sliced": {"sliced": 10, "whole": 10}},
+                 {**MODEL.weights, "sliced": {"to:pick_and_place_simple|apple": {"sliced": 4.0},
+                                              "u:whole": {"whole": 9.0}}},
+                 MODEL.trust, frozenset({"apple", "bread"}))
+
+
+def test_a_slice_the_task_read_most_likely_had_is_added_before_the_thing_is_handled(library: Library) -> None:
+    text = "put the apple on the counter"
+    vocabulary, parse = parsed(text, library)
+    assert not read_fields(parse).sliced
+    after = reread(parse, library, vocabulary, CUT, text)
+    assert [f.frame for f in after.frames] == ["Slice", *(f.frame for f in parse.frames)]
+    assert after.frames[0].inferred is not None and after.frames[0].inferred > 0.9
+    assert read_fields(after).sliced and read_fields(after).values["object"] == "apple"
+    assert reread(parse, library, vocabulary, MODEL, text) == parse           # a model with no sliced field: none
+
+
+def test_no_slice_is_added_to_a_thing_said_whole_or_of_a_class_never_sliced_or_one_said_sliced(
+        library: Library) -> None:
+    for text in ("put the whole apple on the counter", "put the mug on the counter",
+                 "put the apple slice on the counter"):
+        vocabulary, parse = parsed(text, library)
+        after = reread(parse, library, vocabulary, CUT, text)
+        assert [f.frame for f in after.frames].count("Slice") == [f.frame for f in parse.frames].count("Slice"), text
+
+
+def test_the_sliced_field_is_learned_for_the_classes_train_sliced_and_read_back(tmp_path: Path) -> None:
+    rows = [{"goal_sentence": s, "task_type": STACK, "object": o, "receptacle": "Fridge", "mrecep": "Pan",
+             "sliced": c} for s, o, c in [("put a pan with apple in the fridge", "Apple", "1"),
+                                          ("move a pan with an apple to the fridge", "Apple", "1"),
+                                          ("put a whole apple in a pan in the fridge", "Apple", "0"),
+                                          ("put a pan with a mug in the fridge", "Mug", "0")]]
+    model = fit_fields(rows)
+    assert model.sliceable == {"apple"} and model.priors["sliced"] == {"sliced": 2, "whole": 1}
+    assert sliced_probability(model, sentence_grams("put a pan with an apple in the fridge"), STACK, "apple") > 2 / 3
+    assert load_field_model_of(model_json(model, "test")) == model
+    assert not fit_fields([{**r, "sliced": "0"} for r in rows]).sliceable        # nothing sliced: no field
