@@ -648,6 +648,9 @@ STATE_ADVERBS = frozenset(["still", "already", "yet", "now", "really", "currentl
 SWITCHED_MEANS = {"on": "turn on", "off": "turn off"}
 """"*Lights off* in the hall", "the TV on, please": a thing and "on"/"off", no verb, is switching it so
 ("turn the lights off"): the particle's unit, when the library has it."""
+OPERATING = {"running": "on", "going": "on"}
+""""keep the fan *running*", "leave the dishwasher *going*": a machine in operation, which is a thing switched on
+(WordNet's run.v.? "operate, function": "the engine is running"); the state is "on"'s (``SWITCHED_MEANS``), words49."""
 FOUND_OUT = frozenset(["who", "what", "which", "whose", "what's", "who's"])
 """"*find out who* is in the hall", "*check what* is in the fridge", "see who's at the door": a verb of checking
 and a question word asks the question (``QUESTION_MEANS``): "tell me who is in the hall"."""

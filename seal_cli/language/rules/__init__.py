@@ -12,6 +12,7 @@ from __future__ import annotations
 
 from seal_cli.language.rule import Rule
 from seal_cli.language.rules import (
+    anywhere,
     clauses,
     fronted,
     function_words,
@@ -22,6 +23,7 @@ from seal_cli.language.rules import (
     politeness,
     question_tags,
     requests,
+    searched,
     statements,
     telegraphic,
     verbs,
@@ -85,6 +87,7 @@ CLAUSE_START: tuple[Rule, ...] = (
     requests.WHERE,
     requests.WHERE_DID_RULE,
     requests.SEEN_ASKED_RULE,
+    searched.SEARCH_FAILED,
     requests.ASKED_WHERE,
     requests.STATE_QUESTION,
     requests.LEFT_ASKED_RULE,
@@ -232,6 +235,7 @@ WORDS: tuple[Rule, ...] = (
     function_words.OUT_OF_THE_HOUSE,
     function_words.PLACE_WORD_AFTER_FROM,
     function_words.FROM_THERE,
+    anywhere.UNBOUNDED_PLACE,
     function_words.HERE,
     function_words.BACK,
     function_words.PARTICLE_BEFORE_OBJECT,

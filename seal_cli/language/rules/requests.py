@@ -39,6 +39,7 @@ from seal_cli.language.english import (
     NUMBERS,
     OBJECT_PRONOUNS,
     OBLIGED,
+    OPERATING,
     PARTICLES,
     PATH_ALONE,
     PATH_MEANS,
@@ -1256,7 +1257,7 @@ def _state_unit(s: State, low: str) -> str | None:
     its verb ("open", "clean"), an adjective a frame's postcondition says of its theme that frame's first unit
     ("hot": ``hot(theme)`` of Heat, "heat"; :attr:`Lexicon.results`); None when it is no result of a unit of the
     library."""
-    unit = SWITCHED_MEANS.get(low) or verb_lemma(low) or low
+    unit = SWITCHED_MEANS.get(OPERATING.get(low, low)) or verb_lemma(low) or low
     if unit == low and low not in SWITCHED_MEANS and low not in STATE_PARTICLES and not is_adjective(low):
         return None                              # a verb's base form that is no adjective ("move"): no state
     parts = tuple(unit.split())
@@ -1342,8 +1343,12 @@ def _resultative(s: State, i: int) -> Match | None:
     end = stop
     while end > i + 1 and words[end - 1].lower in (",", "please", ".", "!"):
         end -= 1
+    if keeps:                                    # "keep the fan running *in the bedroom*": where the thing is
+        end = next((p for p in range(end - 2, i + 2, -1) if PREPOSITIONS.get(words[p].lower) in LOCATED and
+                    s.np_starts(p + 1) and _state_unit(s, words[p - 1].lower) is not None), end)
     last = words[end - 1].lower if end > i + 2 else ""
-    if not last or last in SWITCHED_MEANS and not keeps or not (is_adjective(last) or last in STATE_PARTICLES) or \
+    if not last or last in SWITCHED_MEANS and not keeps or \
+            not (is_adjective(last) or last in STATE_PARTICLES or last in OPERATING) or \
             words[end - 2].lower in PARTICLES:
         return None                              # "put two lettuce *plants* in the sink", "put one *back* clean"
     found = _state_after(s, i, 1, stop)
@@ -2174,6 +2179,9 @@ RESULTATIVE = Rule("a thing left in a state", _resultative, (
     Example("keep the door shut", "keep", Tag.VERB),
     Example("keep the heater switched on", "switched on", Tag.PARTICLE),
     Example("please keep the gate closed", "closed", Tag.PARTICLE),
+    Example("keep the fan running", "running", Tag.PARTICLE),
+    Example("keep the lamp on in the hallway", "on", Tag.PARTICLE),
+    Example("leave the dishwasher going", "going", Tag.PARTICLE),
 ), None, "'leave X open', 'get X hot': open X, heat X (a verb that puts a thing in a state, and the state)")
 SWITCHED_BY_UNKNOWN = Rule("an unknown verb of a thing and on/off", _switched_by_unknown, (
     Example("flick the light on in the bedroom", "flick", Tag.VERB),
