@@ -24,6 +24,7 @@ from seal_cli.language.english import (
     FINITE,
     FOUND_OUT,
     HELP_MEANS,
+    HELPED_MOVING,
     HERE_WORDS,
     IMPERSONAL_WISHES,
     INFORMATION,
@@ -1578,11 +1579,18 @@ def _person_needs(s: State, i: int) -> tuple[int, int, str] | None:
     and the verb (a one-word unit of the library); None when no such phrase and need start here."""
     words = s.words
     first = words[i]
+    guide = HELPED_MOVING[0]
+    if i + 1 < len(words) and first.lower.isalpha() and first.lower not in CLOSED and s.verb_at(i) is None and \
+            (helped := _help_moving_needed(s, i + 1)) and (guide,) in s.lexicon.units.get(guide, ()):
+        return i + 1, helped, guide    # "robin needs help getting to the exit": one word, a name (words49)
     named = (capitalised(first) or lower_case_name(words, i)) and first.lower not in CLOSED and s.verb_at(i) is None
     if not (first.lower in NP_OPENERS or named):                  # "noah needs to be taken ...": a name (words24)
         return None
     person = named
     for k in range(i + 1, min(len(words) - 1, i + _PERSON_WORDS)):
+        helped = _help_moving_needed(s, k) if person else 0
+        if helped and (HELPED_MOVING[0],) in s.lexicon.units.get(HELPED_MOVING[0], ()):
+            return k, helped, HELPED_MOVING[0]    # "robin needs some help getting to the exit": guide her (words49)
         n = _phrase(s, k, _NEEDS_DONE)
         gerund = n and words[k + n - 1].lower in ("needs", "need", "wants")
         if n and (person or not gerund and first.lower in DETERMINERS) and k + n < len(words):
@@ -1598,6 +1606,32 @@ def _person_needs(s: State, i: int) -> tuple[int, int, str] | None:
             return None                           # "Morgan *likes* ...": a name is one word here
         person = person or low in s.lexicon.people or noun_lemma(low) in s.lexicon.people
     return None
+
+
+_HELP_NEEDED = frozenset(["help", "some help", "a little help", "a bit of help", "a hand", "a helping hand"])
+"""What a person needs to move somewhere, said after "needs" ("Ana needs *a hand* getting to the door")."""
+
+
+def _help_moving_needed(s: State, k: int) -> int:
+    """How many words "needs (some) help (with) getting/to get" and the verb of moving take at ``k`` when where to
+    follows them ("needs help getting *to* the exit", ``HELPED_MOVING``), as "help her get to the exit" asks; else 0.
+    Not "needs help getting dressed" (no where: no leading)."""
+    words = s.words
+    if words[k].lower not in ("needs", "need", "wants"):
+        return 0
+    m = k + 1 + _phrase(s, k + 1, _HELP_NEEDED)
+    if m == k + 1:
+        return 0
+    m += m < len(words) and words[m].lower == "with"
+    if m < len(words) and words[m].lower == "to":
+        m += 1
+        lemma = verb_lemma(words[m].lower) if m < len(words) else None
+    else:
+        lemma = gerund_lemma(words[m].lower) if m < len(words) else None
+    _, moving, where = HELPED_MOVING
+    if lemma not in moving or m + 1 >= len(words) or words[m + 1].lower not in where:
+        return 0
+    return m + 1 - k
 
 
 def _person_needing(s: State, i: int) -> Match | None:
@@ -2205,6 +2239,8 @@ PERSON_NEEDING = Rule("a person who needs leading", _person_needing, (
     Example("Morgan needs to be led to the bookshelf", "Morgan", Tag.NAME),
     Example("the man at the door needs showing to the kitchen", "the", Tag.DET),
     Example("noah needs to be taken to the garage", "noah", Tag.NAME),
+    Example("robin needs some help getting to the exit", "robin", Tag.NAME),     # words49
+    Example("the old man needs a hand to get back to his room", "the", Tag.DET),
 ), lambda low: low in NP_OPENERS or low.isalpha(),
     "'Ana needs guiding to the door', 'the guest has to be taken to the exit': guide/take the person there",
    needs=first_words(_NEEDS_DONE))
