@@ -762,7 +762,15 @@ class Evoker:
         first = frame.elements[0].role if frame.elements else None
         held = first is not None and first not in roles and bool(self.frames) and frame.needs_held() and \
             self.reference.implicit(frame, first) is not None
-        return sum(1 for e in frame.elements if e.role not in roles) - int(held)
+        return sum(1 for e in frame.elements if e.role not in roles and self.used(frame, e.role)) - int(held)
+
+    @staticmethod
+    def used(frame: Frame, role: str) -> bool:
+        """Whether the frame's conditions or actions name the element: one they never name (Place's source, where the
+        thing was: the Pick the planner adds takes it there) is context, never missing ("move [it] to the cabinet"
+        is a Place still, though its source is unsaid; words49)."""
+        return any(role in item.args for items in (frame.preconditions, frame.actions, frame.postconditions)
+                   for item in items)
 
     # -- frames out ----------------------------------------------------------------------------
     @staticmethod

@@ -33,7 +33,7 @@ def _unbounded_place(s: State, i: int) -> Match | None:
 
 UNBOUNDED_PLACE = Rule("a place that bounds nothing", _unbounded_place, (
     Example("have you seen my keys anywhere", "anywhere", Tag.PARTICLE),
-    Example("find the remote, I've looked everywhere", "everywhere", Tag.PARTICLE),
+    Example("search everywhere for my glasses", "everywhere", Tag.PARTICLE),
     Example("look everywhere for the cat", "everywhere", Tag.PARTICLE),
     Example("have you seen it anywhere in the kitchen?", "anywhere", Tag.PARTICLE),
 ), UNBOUNDED, "'anywhere', 'everywhere': the search is not bounded, no place to ground")
