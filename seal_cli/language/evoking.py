@@ -762,15 +762,10 @@ class Evoker:
         first = frame.elements[0].role if frame.elements else None
         held = first is not None and first not in roles and bool(self.frames) and frame.needs_held() and \
             self.reference.implicit(frame, first) is not None
-        return sum(1 for e in frame.elements if e.role not in roles and self.used(frame, e.role)) - int(held)
-
-    @staticmethod
-    def used(frame: Frame, role: str) -> bool:
-        """Whether the frame's conditions or actions name the element: one they never name (Place's source, where the
-        thing was: the Pick the planner adds takes it there) is context, never missing ("move [it] to the cabinet"
-        is a Place still, though its source is unsaid; words49)."""
-        return any(role in item.args for items in (frame.preconditions, frame.actions, frame.postconditions)
-                   for item in items)
+        in_hand = held and "source" in self.types.roles(frame) and "source" not in roles
+        # a thing in hand already has no source to say ("heat the mug, move [it] to the cabinet": Place, with its
+        # source unsaid, not Go; words49)
+        return sum(1 for e in frame.elements if e.role not in roles) - int(held) - int(in_hand)
 
     # -- frames out ----------------------------------------------------------------------------
     @staticmethod
