@@ -1195,6 +1195,19 @@ def _request_for(s: State, i: int) -> Match | None:
                  verb=REQUEST_MEANS, using=False)
 
 
+_WISHED_BESIDE = frozenset(["by", "near", "behind", "in front of"])
+"""Prepositions of where a thing is beside another, which a wish for where it is may say too ("I want my shoes *by*
+the door": put them there; words49), though no "put" takes them as often as ``WISHED_PLACES``."""
+
+
+def _timed(s: State, k: int) -> bool:
+    """Whether the phrase at ``k`` says a time ("by *six*", "by *tomorrow*", "by the *evening*"), not a place."""
+    words = s.words
+    k += k < len(words) and words[k].lower in NP_OPENERS
+    return k < len(words) and (words[k].lower in TIME_WORDS or words[k].lower in NUMBERS or words[k].lower.isdigit()
+                               or words[k].lower in ("morning", "afternoon", "evening", "night", "noon", "midnight"))
+
+
 def _wished_placed(s: State, i: int) -> Match | None:
     """"*I want* the mug on the shelf": a wish for a thing to be somewhere is putting it there (``PLACE_MEANS``):
     a phrase, then one preposition of place (``WISHED_PLACES``) whose phrase ends the sentence, no verb
@@ -1210,7 +1223,8 @@ def _wished_placed(s: State, i: int) -> Match | None:
         end -= 1
     at = [p for p in range(k + 1, end) if words[p].lower in PREPOSITIONS or words[p].lower in (",", "and", "then")
           or s.verb_at(p) is not None and words[p - 1].lower not in NP_OPENERS]
-    if len(at) != 1 or PREPOSITIONS.get(words[at[0]].lower) not in WISHED_PLACES or not s.np_starts(at[0] + 1):
+    if len(at) != 1 or PREPOSITIONS.get(words[at[0]].lower) not in WISHED_PLACES | _WISHED_BESIDE or \
+            not s.np_starts(at[0] + 1) or _timed(s, at[0] + 1):
         return None
     if any(words[p].lower.split("'")[0] in RELATIVES for p in range(k + 1, at[0])):
         return None             # "I want the juice *that's on* the shelf": where it is, no place it goes (words46)
@@ -2258,6 +2272,8 @@ OBLIGED_DROPPED = Rule("the obligation after the thing", _obliged_dropped, (
 WISHED_PLACED_RULE = Rule("a wish for where a thing is", _wished_placed, (
     Example("I want the mug on the shelf", "I want", Tag.VERB),
     Example("I'd like the books in the box, please", "I'd like", Tag.VERB),
+    Example("I want my shoes by the door", "I want", Tag.VERB),             # words49
+    Example("we'd like the plant near the window", "we'd like", Tag.VERB),
 ), first_words(WISHED_PLACED), "'I want X on Y': put X on Y")
 THING_PLACED = Rule("a thing and where it goes, no verb", _thing_placed, (
     Example("mug in the sink", "", Tag.VERB),
