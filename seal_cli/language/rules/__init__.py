@@ -90,6 +90,7 @@ CLAUSE_START: tuple[Rule, ...] = (
     requests.WHERE_DID_RULE,
     requests.SEEN_ASKED_RULE,
     searched.SEARCH_FAILED,
+    searched.TRACKED_DOWN,
     requests.ASKED_WHERE,
     requests.STATE_QUESTION,
     requests.LEFT_ASKED_RULE,

@@ -14,7 +14,7 @@ from seal_cli.language.state import State
 from seal_cli.language.tags import Tag
 from seal_cli.language.tokens import Word
 
-__all__ = ["SEARCH_FAILED"]
+__all__ = ["SEARCH_FAILED", "TRACKED_DOWN"]
 
 SPEAKERS = frozenset(["i", "we"])
 FAILED = frozenset(["can't", "cannot", "couldn't", "can't seem to", "don't seem to be able to"])
@@ -79,3 +79,38 @@ SEARCH_FAILED = Rule("a search the speaker failed at", _search_failed, (
     Example("I am searching for my wallet", "I am searching for", Tag.VERB),
     Example("I can't seem to find the scissors", "I can't seem to find", Tag.VERB),
 ), SPEAKERS | SEARCHING, "'I can't find X', 'I'm looking for X': find X")
+
+
+PURSUING = frozenset(["track", "hunt"])
+"""Verbs of pursuit that, with "down", are finding what was pursued ("*track down* the keys", "hunt the remote down":
+the dictionaries' "to find after a search"). WordNet files "track down" and "hunt down" only under hunting animals
+(hunt.v.01), so as units of Find the verb data would make every way of hunting ("falcon", "poach") a search: they are
+read here, as English's phrasal verbs (words49), not listed in the library."""
+
+
+def _tracked_down(s: State, i: int) -> Match | None:
+    """A verb of pursuit (``PURSUING``, any form) and "down", right after it or after its object ending the clause
+    ("track the dog down"), is Find's: the words of the verb are its verb, the particle split off."""
+    if WHERE_MEANS not in s.lexicon.units:
+        return None
+    words = s.words
+    if (verb_lemma(words[i].lower) or words[i].lower) not in PURSUING or i + 2 >= len(words):
+        return None
+    if words[i + 1].lower == "down" and s.np_starts(i + 2):
+        end = words[i + 1].end
+        return Match(2, (Word(s.text_of(words[i].start, end), words[i].start, end, Tag.VERB, WHERE_MEANS),),
+                     expect=False, verb=WHERE_MEANS, using=False)
+    if not s.np_starts(i + 1):
+        return None
+    q = next((k for k in range(i + 2, len(words)) if words[k].lower in _GOES_ON or words[k].lower == "down"), None)
+    if q is None or words[q].lower != "down" or q + 1 < len(words) and words[q + 1].lower not in _GOES_ON:
+        return None
+    return Match(1, (words[i].tagged(Tag.VERB, WHERE_MEANS),), expect=False, verb=WHERE_MEANS, using=False,
+                 particle=(q, WHERE_MEANS))
+
+
+TRACKED_DOWN = Rule("a thing tracked down", _tracked_down, (
+    Example("track down the keys", "track down", Tag.VERB),
+    Example("could you hunt down the tv remote", "hunt down", Tag.VERB),
+    Example("track the dog down", "track", Tag.VERB),
+), lambda low: low.isalpha() and (verb_lemma(low) or low) in PURSUING, "'track down X', 'hunt X down': find X")
