@@ -762,10 +762,7 @@ class Evoker:
         first = frame.elements[0].role if frame.elements else None
         held = first is not None and first not in roles and bool(self.frames) and frame.needs_held() and \
             self.reference.implicit(frame, first) is not None
-        in_hand = held and "source" in self.types.roles(frame) and "source" not in roles
-        # a thing in hand already has no source to say ("heat the mug, move [it] to the cabinet": Place, with its
-        # source unsaid, not Go; words49)
-        return sum(1 for e in frame.elements if e.role not in roles) - int(held) - int(in_hand)
+        return sum(1 for e in frame.elements if e.role not in roles) - int(held)
 
     # -- frames out ----------------------------------------------------------------------------
     @staticmethod

