@@ -11,7 +11,9 @@ direct question by English's rules, with worked examples of our own:
   hungry?", "she *can* come": "*can* you come?"; "was" with "you" is "were"); "has"/"have"/"had" before a past
   participle too ("has he seen it": "*have* you seen it?"); any other verb takes "do" ("he *wants* tea": "*do* you
   *want* tea?", "he *wanted*": "*did* you *want*");
-- a subject that is not the person asked stays ("ask Raj if *the tea* is ready": "is the tea ready?").
+- a subject that is not the person asked stays ("ask Raj if *the tea* is ready": "is the tea ready?"); a "his"/"her"/
+  "him" in its question is the person asked when it names no one else ("ask Sam if I can borrow *his* book": "can I
+  borrow *your* book?").
 
 :func:`direct_question` does it on words; :func:`person_subject` says how many words at the start of a clause name
 a person (the one asked when a command names nobody else: "find out if *anna* wants coffee").
@@ -116,7 +118,13 @@ def direct_question(words: Sequence[str], asked: Sequence[str] = ()) -> str | No
         past = low != lemma and low in participles(lemma) and not low.endswith("s")
         front = "did" if past else ("do" if you or not low.endswith("s") else "does")
         tail = [lemma, *after]
-    said = [front, *subject, *(_shifted(tail, _SAME_PERSON.get(rest[0].lower(), _ANY_PERSON)) if you else tail)]
+    if you:
+        tail = _shifted(tail, _SAME_PERSON.get(rest[0].lower(), _ANY_PERSON))
+    elif asked and not any(w[:1].isupper() and w != "I" for w in rest):
+        subject, tail = _shifted(subject, _ANY_PERSON), _shifted(tail, _ANY_PERSON)
+        # "ask Sam if I can borrow *his* book": "can I borrow your book?"; "whether *her* brother is home": "is your
+        # brother home?" — another's subject, the one asked the only person the question's pronouns can be (words49)
+    said = [front, *subject, *tail]
     return " ".join(said).rstrip(" ?.!") + "?"
 
 

@@ -197,6 +197,10 @@ POLITE = asked_negatively(frozenset(["please", "kindly", "could you", "can you",
                     # words43: leave to ask asked ("*mind if I ask you to* open the door?")
                     *(f"{lead}mind if i {ask} you to" for lead in ("", "do you ", "would you ", "would you really ")
                       for ask in ("ask", "asked", "could ask")),
+                    # words49: a wish that someone did it ("*I wish someone would* close that window")
+                    *(f"{wish} {who} would" for wish in ("i wish", "i really wish", "if only")
+                      for who in ("you", "someone", "somebody", "anyone", "anybody")),
+                    "i wish you'd", "if only you'd",
                     "second", "secondly", "third", "thirdly", "fourth",
                     "fourthly", "lastly", "listen",
                     *(f"{what} {who} {wish} you to do is" for what in ("what", "all") for who in ("i", "we")
@@ -489,7 +493,11 @@ REQUESTS = frozenset(["i'd like", "i would like", "i should like", "i'd love", "
                         for wish in ("of", "i could have", "i can have", "i could get", "i can get", "we could have",
                                      "we can have")),
                       *(f"what {wish} is" for wish in ("i need", "i want", "i'd like", "i would like", "we need",
-                                                       "we want", "we'd like", "we would like"))])
+                                                       "we want", "we'd like", "we would like")),
+                      # words49: a thing asked for as whether asking is too much ("*would it be too much to ask
+                      # for* a sandwich"), as a deed is (POLITE's "would it be too much to ask you to")
+                      *(f"{be} {much} to ask for" for be in ("would it be", "is it", "would that be")
+                        for much in ("too much", "asking too much"))])
 """A request for a thing said as the speaker's wish ("*I'd like* the red mug", "*Can I have* the big plate",
 "*I need* a pen", "*I could do with* a towel"): it means "bring me ..." (``REQUEST_MEANS``, with the speaker as
 recipient). Asked as a trouble to the hearer, a thing after "for" ("*might I trouble you for* a glass of water",
@@ -648,6 +656,9 @@ STATE_ADVERBS = frozenset(["still", "already", "yet", "now", "really", "currentl
 SWITCHED_MEANS = {"on": "turn on", "off": "turn off"}
 """"*Lights off* in the hall", "the TV on, please": a thing and "on"/"off", no verb, is switching it so
 ("turn the lights off"): the particle's unit, when the library has it."""
+OPERATING = {"running": "on", "going": "on"}
+""""keep the fan *running*", "leave the dishwasher *going*": a machine in operation, which is a thing switched on
+(WordNet's run.v.? "operate, function": "the engine is running"); the state is "on"'s (``SWITCHED_MEANS``), words49."""
 FOUND_OUT = frozenset(["who", "what", "which", "whose", "what's", "who's"])
 """"*find out who* is in the hall", "*check what* is in the fridge", "see who's at the door": a verb of checking
 and a question word asks the question (``QUESTION_MEANS``): "tell me who is in the hall"."""

@@ -189,7 +189,7 @@ class Evoker:
             return
         path = last.lower in TO + FROM and last.lower not in PARTICLES
         putting = last.lower == "in" and bool(clause.objects) and bool(frames) and \
-            all(self.types.roles(f) - {"theme"} == {"goal"} for f in frames)
+            all(self.types.roles(f) - {"theme", "source"} == {"goal"} for f in frames)   # where it was: no end
         if putting and (self.opened_before() or self.carried_before(clause)):
             clause.items[-1] = PP("in", NP(last.start, last.end, last, "place", there=True), last.start)
             return                           # "open the microwave, put the cup *in*": in there, the microwave

@@ -47,6 +47,7 @@ from seal_cli.language.english import (
     PREPOSITIONS,
     RELAYING,
     SEPARATOR_WORDS,
+    STATE_PARTICLES,
     SUBJECTS,
     SUBORDINATORS,
     TIME_WORDS,
@@ -695,7 +696,8 @@ def mentions(text: str, start: int, end: int) -> list[Mention]:
                 words[k].lower not in RELAYING and \
                 words[k].lower not in SUB_FIRST and words[k].lower not in _SOMEWHERE and \
                 not (gerund_lemma(words[k].lower) and not _gerund_modifier(words, k, first + int(determined))) and \
-                not (k > first + int(determined) and _present_verb(words[k].lower)):
+                not (k > first + int(determined) and _present_verb(words[k].lower)) and \
+                not (k > first + int(determined) and words[k].lower in STATE_PARTICLES):   # "left the fridge *open*"
             k += 1
             if capitalised(words[k - 1]) and not (k < len(words) and capitalised(words[k])):
                 break                                         # "my son Declan | arrives"

@@ -28,6 +28,7 @@ from lark import Tree
 from seal_cli.errors import SealError, SealErrors
 from seal_cli.frames.library import Library
 from seal_cli.language.asked import thing_asked
+from seal_cli.language.becoming import becoming
 from seal_cli.language.clauses import Clauses
 from seal_cli.language.element_types import Types
 from seal_cli.language.english import BE_WORDS, NP_OPENERS, NUMBERS, SPEECH_ACTS, WH_WORDS
@@ -49,6 +50,7 @@ from seal_cli.language.tags import Tag
 from seal_cli.language.taskfields import reread
 from seal_cli.language.tasks import infer_task
 from seal_cli.language.units import unit_problems
+from seal_cli.language.unmade import unmade_state
 from seal_cli.language.unplaced import unplaced_error
 from seal_cli.language.values import Evoked, Parse, Phrase
 
@@ -107,6 +109,12 @@ class CommandParser:
         phrasal = phrasal_verb(words, lexicon)
         if phrasal is not None:
             raise _phrasal_error(text, lexicon, *phrasal)
+        unmade = unmade_state(tokens, lexicon)
+        if unmade is not None:
+            raise _unmade_error(text, lexicon, *unmade)
+        became = becoming(words)
+        if became is not None:
+            raise _becoming_error(text, lexicon, *became)
         tree = self.tree(text, words)
         if vocabulary is not None:
             vocabulary = self.with_library_synonyms(vocabulary).in_context(text)   # the sentence weighs
@@ -309,6 +317,20 @@ def _phrasal_error(text: str, lexicon: Lexicon, verb: Word, particle: Word) -> C
         if unit in lexicon.puts else ""
     return CommandError(f"{said!r} is a verb of its own, not {unit!r}: no frame of the library does it{hint}; "
                         f"the robot can {_either(list(lexicon.can))}", verb.start + 1, text, ["a verb"])
+
+
+def _unmade_error(text: str, lexicon: Lexicon, state: Word, verb: str) -> CommandError:
+    """"I want the door *locked*": a state no frame brings about (:mod:`~seal_cli.language.unmade`); refused there."""
+    return CommandError(f"{state.text.lower()!r}: the robot cannot {verb} things (no frame of the library does it), "
+                        f"so it cannot make a thing {state.text.lower()}; it can {_either(list(lexicon.can))}",
+                        state.start + 1, text, ["a state the robot brings about"])
+
+
+def _becoming_error(text: str, lexicon: Lexicon, verb: Word, state: Word) -> CommandError:
+    """"get dressed": becoming so, no thing got (:mod:`~seal_cli.language.becoming`); refused at the verb."""
+    said = f"{verb.text.lower()} {state.text.lower()}"
+    return CommandError(f"{said!r} is becoming {state.text.lower()}, not getting a thing: no frame of the library "
+                        f"does it; the robot can {_either(list(lexicon.can))}", verb.start + 1, text, ["a verb"])
 
 
 def _object_said(text: str, verb: Word, particle: Word) -> str:

@@ -143,8 +143,13 @@ class Roles:
             role = None if item.describes else self.role_for(frame, item, previous, roles, has_to, place_next)
             before = items[at - 1] if at else None
             if role == "goal" and item.prep in LOCATIVE and isinstance(before, PP) and before.prep in FROM and \
-                    roles.get("source") is before.np:
+                    roles.get("source") is before.np and (has_to or "recipient" in self.types.roles(frame)):
                 role = None                       # "take the umbrella from the shelf *in the hall*": where it is
+                #                                   (a frame ending at a place only: "put two knives from the
+                #                                   table *in the drawer*", its goal; words49)
+            if role == "source" and item.prep in LOCATIVE and ("goal" in roles or self.puts_only(frame)):
+                role = None                       # "put the cup on the table *by the sink*": where the goal is;
+                #                                   a frame that only puts a held thing down starts "from" a place
             if role == "source" and item.prep in LOCATIVE and \
                     any(isinstance(x, PP) and x.prep in FROM for x in items[at + 1:]):
                 role = None                       # "the object *at the left of* the mug from the desk": "from" says
@@ -173,6 +178,12 @@ class Roles:
             previous = item.np
         score = sum(self.fit(frame, role, np) for role, np in roles.items())
         return roles, attached, score
+
+    def puts_only(self, frame: Frame) -> bool:
+        """Whether the frame puts a thing it holds somewhere, to no one (Place): its source, where the thing was, is
+        said with "from" only ("move the sugar *from* the pantry to the table"); a locative phrase is where it goes
+        or describes a noun ("put a knife *in a blue container* onto the table": the container is moved too)."""
+        return frame.needs_held() and "recipient" not in self.types.roles(frame)
 
     def told_whom(self, np: NP) -> bool:
         """Whether a telling's one object may be the one told, with what it is about said after it ("tell *robin*

@@ -584,6 +584,9 @@ class State:
             # "grace wants a drink", "dad needs his glasses": a need of a thing stated (words27)
         if not capitalised(words[i]) and lower_case_name(words, i):
             return end                                        # "noah has to get to the garage": a name (words24)
+        if capitalised(words[i]) and first.isalpha() and first not in CLOSED and first not in self.lexicon.units and \
+                (nxt in _BE_STATED or nxt == "'s" and not self.possessed_at(i + 2, end)):
+            return end          # "Grace is in the lounge, ...", "Rose's upstairs": no command says "X is" (words49)
         if verb_lemma(first) == first and first not in SUBJECTS:
             return 0                                          # "Grab the cup": a command, maybe an unknown verb
         if self.wish_of_deed(i):

@@ -5,9 +5,10 @@ person relaying a message says whose it is and turns its first person singular i
 
 - a statement: "I'm ready" → *the person who sent me says they're ready*; "I was right and my tea is cold" →
   *... says they were right and their tea is cold*; "it's me" → *... says it's them*;
-- a question asked for the sender ("ask Sam if I can borrow his book": "can I borrow his book?") →
-  *can the person who sent me borrow his book?* (:func:`asked_for`: the sender is the subject after the auxiliary,
-  which agrees with it, :data:`INVERTED`: "do I" *does the person who sent me*, "am I" *is ...*);
+- a question asked for the sender ("ask Sam if I can borrow his book": the parser's "can I borrow your book?",
+  :mod:`~seal_cli.language.asking`) → *can the person who sent me borrow your book?* (:func:`asked_for`: the
+  sender is the subject after the auxiliary, which agrees with it, :data:`INVERTED`: "do I" *does the person who
+  sent me*, "am I" *is ...*);
 - a request (the message opens with a verb: "tell Nora to call me", the message "call me") → *the person who
   sent me asks you to call them*; "don't forget my keys" → *... asks you not to forget their keys*.
 

@@ -134,3 +134,13 @@ def test_a_question_word_with_its_verb_contracted_is_asked_as_said(library: Libr
     assert message.head == question
     told = parse_command("tell Kenji what's in the mini fridge", library).frames[0].elements["message"]
     assert told.head == told.text == "what's in the mini fridge"
+
+
+@pytest.mark.parametrize(("said", "asked", "question"), [
+    ("if I can borrow his book", "Sam", "can I borrow your book?"),       # the one asked: no one else is named
+    ("whether her brother is home", "Mia", "is your brother home?"),
+    ("if Anna can borrow his book", "Raj", "can Anna borrow his book?"),  # another named: "his" may be hers
+])
+def test_a_pronoun_of_the_person_asked_is_turned_to_them(said: str, asked: str, question: str) -> None:
+    """"ask Sam if I can borrow his book" kept "his" (words49): to Sam, it is "your book"."""
+    assert direct_question(said.split(), asked.split()) == question

@@ -253,8 +253,8 @@ def test_a_path_after_then_repeats_the_verb_of_motion(library: Library) -> None:
 
 
 def test_a_verb_no_frame_lists_after_and_is_no_noun_of_a_list(library: Library) -> None:
-    with pytest.raises(CommandError, match="unknown verb 'hunt'"):   # it was "the porch, hunt" (the goal), Find lost
-        parse_command("go to the porch, hunt down the cat, and hand it to me", library)
+    with pytest.raises(CommandError, match="unknown verb 'feed'"):   # it was "the porch, hunt" (the goal), Find lost
+        parse_command("go to the porch, feed the cat, and hand it to me", library)   # ("hunt down": Find, words49)
     assert texts("go to the attic and let Mia know that lunch is ready", library) == [
         ("Go", {"goal": "the attic"}), ("Tell", {"message": "lunch is ready", "recipient": "Mia"})]
     assert texts("put the fork and spoon in the drawer", library) == [      # a noun that is also a verb: a noun
@@ -1948,7 +1948,7 @@ def test_a_place_word_after_from_is_the_source(
 
 
 @pytest.mark.parametrize(("text", "want"), [
-    ("could you see my wallet anywhere?", [("Find", {"theme": "wallet", "ground": "anywhere"})]),
+    ("could you see my wallet anywhere?", [("Find", {"theme": "wallet"})]),    # words49: "anywhere" bounds nothing
     ("can you see the visitor out", [("Guide", {"theme": "visitor", "goal": "exit"})]),     # Guide's, as before
     ("can you see the woman by the fridge? follow her", [("Follow", {"theme": "woman", "source": "fridge"})]),
 ])

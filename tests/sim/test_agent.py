@@ -972,7 +972,7 @@ def test_a_balcony_is_said_on_and_a_room_in(library: Library, text: str, said: s
     ("studio", "tell Nora dinner is ready", 'said "dinner is ready"'),
     ("studio", "tell me I'm ready", 'said "I\'m ready"'),              # to the speaker: their own words back
     ("clinic", "tell Victor I'm running late", 'said "the doctor says they\'re running late"'),
-    ("studio", "ask Sam if I can borrow his book", 'asked Sam "can the person who sent me borrow his book?"'),
+    ("studio", "ask Sam if I can borrow his book", 'asked Sam "can the person who sent me borrow your book?"'),
     ("studio", "tell Sam I will meet him", 'said "the person who sent me says they will meet you"'),   # words47
 ])
 def test_a_message_passed_on_says_whose_it_is(library: Library, house: str, text: str, said: str) -> None:

@@ -429,6 +429,10 @@ def _determiner(s: State, i: int) -> Match | None:
 _WHATEVER = frozenset(["whatever", "whichever"])
 
 
+_TELLERS = frozenset(["he", "she", "they", "i", "you", "we"])
+"""Subjects of a free relative said after a verb of telling ("tell me whatever *she* says")."""
+
+
 def _whatever(s: State, i: int) -> Match | None:
     """"pick up *whatever is* there", "bring me whatever's on the counter", "take whatever is in the sink": a free
     relative of things is the thing, as "everything" is, and its "is" is dropped as "that is" is ("everything that
@@ -437,6 +441,9 @@ def _whatever(s: State, i: int) -> Match | None:
         return None
     words = s.words
     k = i + 1
+    if words[i].lower == "whatever" and s.verb_index >= 0 and str(s.out[s.verb_index].info) in s.lexicon.speech and \
+            k + 1 < len(words) and words[k].lower in _TELLERS:
+        return s.emit(i, 1, Tag.WH)              # "tell me *whatever* she says": what she says (words49)
     if k < len(words) and words[k].lower in BE_WORDS and k + 1 < len(words) and (
             words[k + 1].lower in PREPOSITIONS or words[k + 1].lower in HERE_WORDS):
         return Match(2, s.emit(i, 1, Tag.WORD).words)
@@ -636,6 +643,7 @@ DETERMINER = Rule("determiner", _determiner, (Example("bring me the cup", "the",
 WHATEVER = Rule("whatever is", _whatever, (
     Example("go to the table and pick up whatever is there", "whatever", Tag.WORD),
     Example("take whatever's in the sink", "whatever", Tag.WORD),
+    Example("tell me whatever she says", "whatever", Tag.WH),
 ), _WHATEVER, "'whatever is on the counter': the thing, its 'is' dropped as 'that is' is")
 PRONOUN_QUANTIFIED = Rule("pronoun with its quantifier", _pronoun_quantified, (
     Example("put the apple in the bowl and put them both on the table", "them both", Tag.PRON),

@@ -21,12 +21,13 @@ from seal_cli.language.english import (
     NP_OPENERS,
     OBJECT_PRONOUNS,
     PARTICLES,
+    PREPOSITIONS,
     PROHIBITIVES,
     SUBJECTS,
 )
 from seal_cli.language.morphology import in_verb_tables, verb_lemma
 from seal_cli.language.rule import Example, Match, Rule
-from seal_cli.language.state import CLOSED, TIME_FIRST, State, first_words, longest_phrase, merge
+from seal_cli.language.state import CLOSED, TIME_FIRST, State, first_words, longest_phrase, match_phrase, merge
 from seal_cli.language.tags import Tag
 from seal_cli.language.tokens import Word
 
@@ -254,9 +255,11 @@ def _correction(s: State, i: int, k: int, *, bare: bool = False) -> Match | None
         if j >= len(words) or words[j].lower != ",":
             return None
         k = j + 1
-    again = _clause_again(s, i, k, other=denied and said > 1)
-    if again is not None:
+    again = _clause_again(s, i, k, other=denied and (said > 1 or words[k - 1].lower == ","))
+    if again is not None:                        # ", no, close it": "no" set off by commas denies (words49)
         return again
+    if words[k].lower in PREPOSITIONS:
+        return _place_corrected(s, i, k)
     if (bare or words[i].lower in _CORRECTION_JOINS) and words[k].lower not in NP_OPENERS:
         return None                              # "and, I mean, *see* if Jane is there": a next step, no phrase
     if not s.np_starts(k) or s.verb_after(k) and words[k].lower not in ("the", "a", "an", "my", "your"):
@@ -282,6 +285,29 @@ def _correction(s: State, i: int, k: int, *, bare: bool = False) -> Match | None
     if split:                                    # the particle stays with its verb, before the phrase said again
         return Match(k - i, last=out[-1], replaces=len(out) - m)
     return Match(k - i, last=out[m - 1], replaces=len(out) - m + 1)
+
+
+def _place_corrected(s: State, i: int, k: int) -> Match | None:
+    """", I mean *on the hook*": after a correction's marks, a preposition and its phrase ending the sentence replace
+    the last preposition and phrase said in the clause ("put the keys on the shelf, I mean on the hook": the hook is
+    the goal; words49: the correction was a remark, the shelf kept)."""
+    words, out = s.words, s.out
+    n = match_phrase(words, k, PREPOSITIONS)
+    if not n or not s.np_starts(k + n) or s.verb_after(k + n):
+        return None
+    end = k + n
+    while end < len(words) and words[end].lower not in _CLAUSE_ENDS and words[end].lower not in ("and", "then"):
+        end += 1
+    if end < len(words) and words[end].lower not in END_MARKS:
+        return None
+    m = len(out)
+    while m > 0 and out[m - 1].tag in _NP_TAGS:
+        m -= 1
+    if m > 0 and out[m - 1].tag in _NP_OPENING:
+        m -= 1
+    if m == len(out) or m < 2 or out[m - 1].tag != Tag.PREP or s.verb_index >= m - 1:
+        return None
+    return Match(k - i, last=out[m - 2], replaces=len(out) - m + 2)
 
 
 _CORRECTION_JOINS = frozenset(["and", "but"])
@@ -358,6 +384,9 @@ CORRECTED = Rule("a phrase corrected", _corrected, (
     Example("take the cup but sorry, the mug", "cup", ""),
     Example("go to the kitchen and no wait go to the office", "kitchen", ""),   # no comma: two words of marks
     Example("open the door, no wait, close it", "door", ""),      # another verb after a denial (words47)
+    Example("close the window, no, open it", "window", ""),       # "no" set off by commas (words49)
+    Example("put the keys on the shelf, I mean on the hook", "shelf", ""),   # a place said again (words49)
+    Example("take the towels to the bathroom, sorry, to the bedroom", "bathroom", ""),
 ), frozenset([","]) | _CORRECTION_JOINS, "', no, NP' after a phrase: the new phrase stands for the last one said")
 CORRECTED_UNJOINED = Rule("a phrase corrected, no comma", _corrected_unjoined, (
     Example("bring me the plate no wait the bowl", "plate", ""),

@@ -24,6 +24,7 @@ from seal_cli.language.english import (
     FINITE,
     FOUND_OUT,
     HELP_MEANS,
+    HELPED_MOVING,
     HERE_WORDS,
     IMPERSONAL_WISHES,
     INFORMATION,
@@ -39,6 +40,7 @@ from seal_cli.language.english import (
     NUMBERS,
     OBJECT_PRONOUNS,
     OBLIGED,
+    OPERATING,
     PARTICLES,
     PATH_ALONE,
     PATH_MEANS,
@@ -1193,6 +1195,19 @@ def _request_for(s: State, i: int) -> Match | None:
                  verb=REQUEST_MEANS, using=False)
 
 
+_WISHED_BESIDE = frozenset(["by", "near", "behind", "in front of"])
+"""Prepositions of where a thing is beside another, which a wish for where it is may say too ("I want my shoes *by*
+the door": put them there; words49), though no "put" takes them as often as ``WISHED_PLACES``."""
+
+
+def _timed(s: State, k: int) -> bool:
+    """Whether the phrase at ``k`` says a time ("by *six*", "by *tomorrow*", "by the *evening*"), not a place."""
+    words = s.words
+    k += k < len(words) and words[k].lower in NP_OPENERS
+    return k < len(words) and (words[k].lower in TIME_WORDS or words[k].lower in NUMBERS or words[k].lower.isdigit()
+                               or words[k].lower in ("morning", "afternoon", "evening", "night", "noon", "midnight"))
+
+
 def _wished_placed(s: State, i: int) -> Match | None:
     """"*I want* the mug on the shelf": a wish for a thing to be somewhere is putting it there (``PLACE_MEANS``):
     a phrase, then one preposition of place (``WISHED_PLACES``) whose phrase ends the sentence, no verb
@@ -1208,7 +1223,8 @@ def _wished_placed(s: State, i: int) -> Match | None:
         end -= 1
     at = [p for p in range(k + 1, end) if words[p].lower in PREPOSITIONS or words[p].lower in (",", "and", "then")
           or s.verb_at(p) is not None and words[p - 1].lower not in NP_OPENERS]
-    if len(at) != 1 or PREPOSITIONS.get(words[at[0]].lower) not in WISHED_PLACES or not s.np_starts(at[0] + 1):
+    if len(at) != 1 or PREPOSITIONS.get(words[at[0]].lower) not in WISHED_PLACES | _WISHED_BESIDE or \
+            not s.np_starts(at[0] + 1) or _timed(s, at[0] + 1):
         return None
     if any(words[p].lower.split("'")[0] in RELATIVES for p in range(k + 1, at[0])):
         return None             # "I want the juice *that's on* the shelf": where it is, no place it goes (words46)
@@ -1256,7 +1272,7 @@ def _state_unit(s: State, low: str) -> str | None:
     its verb ("open", "clean"), an adjective a frame's postcondition says of its theme that frame's first unit
     ("hot": ``hot(theme)`` of Heat, "heat"; :attr:`Lexicon.results`); None when it is no result of a unit of the
     library."""
-    unit = SWITCHED_MEANS.get(low) or verb_lemma(low) or low
+    unit = SWITCHED_MEANS.get(OPERATING.get(low, low)) or verb_lemma(low) or low
     if unit == low and low not in SWITCHED_MEANS and low not in STATE_PARTICLES and not is_adjective(low):
         return None                              # a verb's base form that is no adjective ("move"): no state
     parts = tuple(unit.split())
@@ -1342,8 +1358,12 @@ def _resultative(s: State, i: int) -> Match | None:
     end = stop
     while end > i + 1 and words[end - 1].lower in (",", "please", ".", "!"):
         end -= 1
+    if keeps:                                    # "keep the fan running *in the bedroom*": where the thing is
+        end = next((p for p in range(end - 2, i + 2, -1) if PREPOSITIONS.get(words[p].lower) in LOCATED and
+                    s.np_starts(p + 1) and _state_unit(s, words[p - 1].lower) is not None), end)
     last = words[end - 1].lower if end > i + 2 else ""
-    if not last or last in SWITCHED_MEANS and not keeps or not (is_adjective(last) or last in STATE_PARTICLES) or \
+    if not last or last in SWITCHED_MEANS and not keeps or \
+            not (is_adjective(last) or last in STATE_PARTICLES or last in OPERATING) or \
             words[end - 2].lower in PARTICLES:
         return None                              # "put two lettuce *plants* in the sink", "put one *back* clean"
     found = _state_after(s, i, 1, stop)
@@ -1573,11 +1593,18 @@ def _person_needs(s: State, i: int) -> tuple[int, int, str] | None:
     and the verb (a one-word unit of the library); None when no such phrase and need start here."""
     words = s.words
     first = words[i]
+    guide = HELPED_MOVING[0]
+    if i + 1 < len(words) and first.lower.isalpha() and first.lower not in CLOSED and s.verb_at(i) is None and \
+            (helped := _help_moving_needed(s, i + 1)) and (guide,) in s.lexicon.units.get(guide, ()):
+        return i + 1, helped, guide    # "robin needs help getting to the exit": one word, a name (words49)
     named = (capitalised(first) or lower_case_name(words, i)) and first.lower not in CLOSED and s.verb_at(i) is None
     if not (first.lower in NP_OPENERS or named):                  # "noah needs to be taken ...": a name (words24)
         return None
     person = named
     for k in range(i + 1, min(len(words) - 1, i + _PERSON_WORDS)):
+        helped = _help_moving_needed(s, k) if person else 0
+        if helped and (HELPED_MOVING[0],) in s.lexicon.units.get(HELPED_MOVING[0], ()):
+            return k, helped, HELPED_MOVING[0]    # "robin needs some help getting to the exit": guide her (words49)
         n = _phrase(s, k, _NEEDS_DONE)
         gerund = n and words[k + n - 1].lower in ("needs", "need", "wants")
         if n and (person or not gerund and first.lower in DETERMINERS) and k + n < len(words):
@@ -1593,6 +1620,32 @@ def _person_needs(s: State, i: int) -> tuple[int, int, str] | None:
             return None                           # "Morgan *likes* ...": a name is one word here
         person = person or low in s.lexicon.people or noun_lemma(low) in s.lexicon.people
     return None
+
+
+_HELP_NEEDED = frozenset(["help", "some help", "a little help", "a bit of help", "a hand", "a helping hand"])
+"""What a person needs to move somewhere, said after "needs" ("Ana needs *a hand* getting to the door")."""
+
+
+def _help_moving_needed(s: State, k: int) -> int:
+    """How many words "needs (some) help (with) getting/to get" and the verb of moving take at ``k`` when where to
+    follows them ("needs help getting *to* the exit", ``HELPED_MOVING``), as "help her get to the exit" asks; else 0.
+    Not "needs help getting dressed" (no where: no leading)."""
+    words = s.words
+    if words[k].lower not in ("needs", "need", "wants"):
+        return 0
+    m = k + 1 + _phrase(s, k + 1, _HELP_NEEDED)
+    if m == k + 1:
+        return 0
+    m += m < len(words) and words[m].lower == "with"
+    if m < len(words) and words[m].lower == "to":
+        m += 1
+        lemma = verb_lemma(words[m].lower) if m < len(words) else None
+    else:
+        lemma = gerund_lemma(words[m].lower) if m < len(words) else None
+    _, moving, where = HELPED_MOVING
+    if lemma not in moving or m + 1 >= len(words) or words[m + 1].lower not in where:
+        return 0
+    return m + 1 - k
 
 
 def _person_needing(s: State, i: int) -> Match | None:
@@ -2174,6 +2227,9 @@ RESULTATIVE = Rule("a thing left in a state", _resultative, (
     Example("keep the door shut", "keep", Tag.VERB),
     Example("keep the heater switched on", "switched on", Tag.PARTICLE),
     Example("please keep the gate closed", "closed", Tag.PARTICLE),
+    Example("keep the fan running", "running", Tag.PARTICLE),
+    Example("keep the lamp on in the hallway", "on", Tag.PARTICLE),
+    Example("leave the dishwasher going", "going", Tag.PARTICLE),
 ), None, "'leave X open', 'get X hot': open X, heat X (a verb that puts a thing in a state, and the state)")
 SWITCHED_BY_UNKNOWN = Rule("an unknown verb of a thing and on/off", _switched_by_unknown, (
     Example("flick the light on in the bedroom", "flick", Tag.VERB),
@@ -2197,6 +2253,8 @@ PERSON_NEEDING = Rule("a person who needs leading", _person_needing, (
     Example("Morgan needs to be led to the bookshelf", "Morgan", Tag.NAME),
     Example("the man at the door needs showing to the kitchen", "the", Tag.DET),
     Example("noah needs to be taken to the garage", "noah", Tag.NAME),
+    Example("robin needs some help getting to the exit", "robin", Tag.NAME),     # words49
+    Example("the old man needs a hand to get back to his room", "the", Tag.DET),
 ), lambda low: low in NP_OPENERS or low.isalpha(),
     "'Ana needs guiding to the door', 'the guest has to be taken to the exit': guide/take the person there",
    needs=first_words(_NEEDS_DONE))
@@ -2214,6 +2272,8 @@ OBLIGED_DROPPED = Rule("the obligation after the thing", _obliged_dropped, (
 WISHED_PLACED_RULE = Rule("a wish for where a thing is", _wished_placed, (
     Example("I want the mug on the shelf", "I want", Tag.VERB),
     Example("I'd like the books in the box, please", "I'd like", Tag.VERB),
+    Example("I want my shoes by the door", "I want", Tag.VERB),             # words49
+    Example("we'd like the plant near the window", "we'd like", Tag.VERB),
 ), first_words(WISHED_PLACED), "'I want X on Y': put X on Y")
 THING_PLACED = Rule("a thing and where it goes, no verb", _thing_placed, (
     Example("mug in the sink", "", Tag.VERB),
