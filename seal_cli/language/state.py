@@ -564,8 +564,11 @@ class State:
         if i >= len(words):
             return 0
         end = i
+        first_word = words[i].lower                           # "*I'm* thirsty can you ...": a subject and its verb
         while end < len(words) and words[end].lower not in END_MARKS and words[end].lower not in (",", ";", ":") \
-                and not (end > i + 2 and self.command_resumes(end)):
+                and not (end > i + 2 and self.command_resumes(end) or
+                         end == i + 2 and (self.imperative_unmarked(end) or
+                                           "'" in first_word and self.command_resumes(end))):
             end += 1
         first = words[i].lower
         nxt = words[i + 1].lower if i + 1 < end else ""
@@ -596,10 +599,12 @@ class State:
         if "'" in first and first.split("'")[0] in SUBJECTS | {"you", "who", "what", "here"} and \
                 "'" + first.split("'", 1)[1] in CONTRACTED:
             return end                                        # "we're eating in ten", "i'll be right there"
-        if first in _PLACED_SUBJECTS and nxt in LOCATIVE and self.np_starts(i + 2):
+        if first in _PLACED_SUBJECTS and (nxt in LOCATIVE and self.np_starts(i + 2) or gerund_lemma(nxt)):
             k = i + 2                                         # "*someone in the kitchen is* waving, greet them"
-            while k < end and words[k].lower not in FINITE and self.verb_at(k) is None:
-                k += 1
+            # "*someone raising their left arm* in the office *wants* ...": described by what they do (words48)
+            while k < end and words[k].lower not in FINITE and (self.verb_at(k) is None or
+                                                                words[k - 1].lower in NP_OPENERS):
+                k += 1                                        # "their *left* arm": a noun's word, no verb
             return end if k < end and words[k].lower in FINITE else 0
         if first in SUBJECTS or first == "you" and nxt not in ("can", "could", "will", "would", "should", "must"):
             return end if nxt in FINITE or nxt in CONTRACTED or self.finite_form(i + 1, end) or \
@@ -745,7 +750,34 @@ class State:
         if low in _ASKING_MODALS and m + 2 < len(words) and words[m + 1].lower == "you" and self._base_unit(m + 2):
             return True                          # "robin is at the sofa *can you* guide her there" (words47)
         return low not in CLOSED and words[m - 1].lower in ("there", "here") and self._base_unit(m) and \
-            self.np_starts(m + 1)
+            self.np_starts(m + 1) or self.imperative_unmarked(m)
+
+    def imperative_unmarked(self, m: int) -> bool:
+        """Whether a command said without a mark starts at ``m``, right after a statement that is whole (words48):
+        "angel is thirsty *bring* him a drink", "robin is in the kitchen *bring* him a coke", "the door is open
+        *close* it", "I'm thirsty *please bring* me some water". The statement has a finite verb of its own (or a
+        subject contracted with one: "I'm"); it ends in an open word (an adjective, a noun, a participle: never "to",
+        "can" or "the"); the verb at ``m`` (or after "please") is a verb of the library in its base form, and its
+        object, a pronoun or a determiner, follows. A noun the verb could be ("by the *light* switch") has no object
+        after it."""
+        words = self.words
+        k = m + (words[m].lower == "please")
+        if k + 1 >= len(words) or not self._base_unit(k) or not (
+                words[k + 1].lower in OBJECT_PRONOUNS or words[k + 1].lower in DETERMINERS or
+                words[k + 1].lower in POSSESSIVES):
+            return False
+        before = words[m - 1].lower if m > 0 else ""
+        if not before.isalpha() or before in CLOSED or before in FINITE or self._base_unit(m - 1) and \
+                not is_adjective(before):
+            return False                         # "... *go bring* him a coke": the command starts at "go"
+        for j in range(m - 2, -1, -1):
+            low = words[j].lower
+            if low in END_MARKS or low in (",", ";", "and", "then"):
+                return False
+            if low in FINITE or verb_lemma(low) in LINKING_VERBS and inflected(low) or \
+                    "'" in low and "'" + low.split("'", 1)[1] in CONTRACTED:
+                return j > 0 or "'" in low
+        return False
 
     def _base_unit(self, k: int) -> bool:
         """Whether a verb of the library starts at ``k`` in its base form."""

@@ -185,6 +185,9 @@ ASIDE = Rule("sentence beside the command", _aside, (
     Example("Bogdan has a question; answer it for him", "Bogdan has a question;", Tag.POLITE),
     Example("see the man by the window? greet him", "see the man by the window?", Tag.POLITE),
     Example("on the sofa there's a blanket, bring it to me", "on the sofa there's a blanket,", Tag.POLITE),
+    Example("someone waving in the hall wants a towel, take them one", "someone waving in the hall wants a towel,",
+            Tag.POLITE),                                          # words48: described by what they do
+    Example("the gate is open close it", "the gate is open", Tag.POLITE),   # words48: the command said on, no mark
 ), None, "a greeting, a statement with no verb of the library, or 'see X?', where a command should start")
 QUESTION_ASKER = Rule("whose question, asked", _question_asker, (
     Example("answer whatever the man at the door asks you", "", Tag.OF),
