@@ -272,7 +272,8 @@ SPELLINGS = {"pls": "please", "plz": "please", "pleeease": "please", "thx": "tha
              "theres": "there's", "wont": "won't", "cant": "can't", "wheres": "where's", "hows": "how's",
              "ill": "i'll", "id": "i'd", "youll": "you'll", "weve": "we've", "theyve": "they've", "itll": "it'll",
              "frm": "from", "thru": "through", "abt": "about", "cud": "could", "cld": "could", "wud": "would",
-             "shud": "should", "pleez": "please", "ppl": "people", "wats": "what's", "wat's": "what's", "wat": "what"}
+             "shud": "should", "pleez": "please", "ppl": "people", "wats": "what's", "wat's": "what's", "wat": "what",
+             "urself": "yourself", "yrself": "yourself"}
 """Texting spellings of function words ("turn the lights off *pls*", "open it *n* wipe it", "where *r* my keys",
 "tell her *im* late"): read as the word they spell."""
 READ_AS_ONE = {"prior to": "before", "subsequent to": "after"}

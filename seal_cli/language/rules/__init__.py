@@ -95,6 +95,7 @@ CLAUSE_START: tuple[Rule, ...] = (
     requests.ASKED_WHETHER,
     requests.FOUND_OUT_RULE,
     requests.FOUND_OUT_THING,
+    requests.INFORMATION_LEARNT,
     requests.ASKED_OF_PERSON,
     requests.WHETHER_IS_RULE,
     requests.KNOW_WISH,

@@ -883,6 +883,33 @@ def _found_out_thing(s: State, i: int) -> Match | None:
                  expect=False, verb=QUESTION_MEANS, using=False)
 
 
+_LEARNING = frozenset(["find", "get", "learn", "discover", "identify", "obtain", "determine", "ascertain",
+                       "establish", "check"])
+"""Verbs that, said of what the robot reports of a person (``INFORMATION``: "the name of X", "their pose"), learn
+it as "find out" does (words48): a name is no thing to fetch or look for."""
+
+
+def _information_learnt(s: State, i: int) -> Match | None:
+    """"*Find the name of* the person at the door", "get the pose of the man by the sofa", "learn their name": a verb
+    of finding or getting (``_LEARNING``) said of a person's information (``INFORMATION`` after "the" and before
+    "of", or after a possessive) learns it, and what is learnt is told (``QUESTION_MEANS``, to the speaker), as
+    "find out the name of ..." is (``_found_out_thing``): it was a Pick or a Find of "the name". "get me the name
+    of X" is ``INFORMATION_GIVEN``'s; "find the person's keys" names no information."""
+    words = s.words
+    if words[i].lower not in _LEARNING or i + 2 >= len(words) or QUESTION_MEANS not in s.lexicon.units or \
+            words[i + 2].lower not in INFORMATION:
+        return None
+    det = words[i + 1].lower
+    if not (det == "the" and i + 3 < len(words) and words[i + 3].lower == "of" or
+            det in _INFO_DETERMINERS and det != "the"):
+        return None
+    end = s.speech_end(i + 1)
+    last = words[i].end
+    return Match(end - i, (Word(s.text_of(words[i].start, last), words[i].start, last, Tag.VERB, QUESTION_MEANS),
+                           _unsaid(last, Tag.PRON, None, _SPEAKER), s.emit(i + 1, end - i - 1, Tag.SAID).words[0]),
+                 expect=False, verb=QUESTION_MEANS, using=False)
+
+
 _WHERE_SAID = HERE_WORDS | frozenset(["home", "there", "around", "back", "out", "in", "upstairs", "downstairs",
                                       "inside", "outside", "away"])
 ASK_MEANS = "ask"
@@ -2322,6 +2349,12 @@ FOUND_OUT_THING = Rule("find out a thing", _found_out_thing, (
     Example("find out the name of the person at the door", "the name of the person at the door", Tag.SAID),
     Example("figure out the time and tell Jo", "the time", Tag.SAID),
 ), first_words(_LEARNED), "'find out the name of X': tell the name of X (what is learnt is told, not searched for)")
+INFORMATION_LEARNT = Rule("a person's information learnt", _information_learnt, (
+    Example("find the name of the woman at the gate", "the name of the woman at the gate", Tag.SAID),
+    Example("go to the porch, get the pose of the man there and tell me", "the pose of the man there", Tag.SAID),
+    Example("learn their name", "learn", Tag.VERB),
+), _LEARNING, "'get the name of X', 'learn their name': tell the name of X (learnt, not fetched)",
+   needs=INFORMATION)
 ASKED_OF_PERSON = Rule("found out by asking", _asked_of_person, (
     Example("find out if anna wants coffee", "find out", Tag.VERB),
     Example("check whether the guest is staying for dinner", "the guest is staying for dinner", Tag.SAID),
