@@ -17,6 +17,7 @@ from seal_cli.language.english import (
     ASKED_ALONE,
     BE_WORDS,
     CHECK_WHETHER,
+    CONTRACTED,
     DETERMINERS,
     DIRECTIONS,
     END_MARKS,
@@ -123,7 +124,8 @@ def _question(s: State, i: int) -> Match | None:
     if QUESTION_MEANS not in s.lexicon.units or i + 1 >= len(words) or words[i + 1].lower in END_MARKS:
         return None
     nxt = words[i + 1].lower
-    if nxt not in ("is", "are", "'s", "was", "were") and not nxt.isalpha() and not nxt.isdigit() or \
+    if nxt not in ("is", "are", "'s", "was", "were") and not nxt.isalpha() and not nxt.isdigit() and \
+            not _contracted_subject(nxt) or \
             _phrase(s, i, _PSEUDO_CLEFTS):      # "which *3* items on the table are the thinnest?" (words41)
         return None                               # "what I need is X": a wish (``WISHED_STATE``), no question
     end = _asked_again_cut(s, i, s.speech_end(i))  # the question, whatever its shape, is what to tell
@@ -131,6 +133,16 @@ def _question(s: State, i: int) -> Match | None:
         return None                               # "what is": no question yet
     return Match(end - i, (_unsaid(words[i].start, Tag.VERB, QUESTION_MEANS), s.emit(i, end - i, Tag.SAID).words[0]),
                  expect=False, verb=QUESTION_MEANS, using=False)
+
+
+def _contracted_subject(low: str) -> bool:
+    """Whether a word is a subject pronoun contracted with its verb ("*they're*", "she's", "you've"): a question goes
+    on with it as with "they are" ("... and what *they're* wearing", words48: was an unknown verb "what")."""
+    subject, _, rest = low.partition("'")
+    return bool(rest) and subject in _SUBJECT_PRONOUNS and "'" + rest in CONTRACTED
+
+
+_SUBJECT_PRONOUNS = frozenset(["i", "you", "he", "she", "it", "we", "they", "there"])
 
 
 def _asked_again_cut(s: State, i: int, end: int) -> int:
@@ -2122,6 +2134,7 @@ QUESTION = Rule("bare question", _question, (
     Example("which of the bottles in the pantry is the biggest?", "", Tag.VERB),
     Example("who is in the kitchen?", "", Tag.VERB),
     Example("who is knocking on the gate, would you say?", "who is knocking on the gate", Tag.SAID),
+    Example("tell me how many guests are in the hall and what they're eating", "what they're eating", Tag.SAID),
 ), QUESTION_WORDS, "a question where a command starts: 'tell me' and the question")
 WHERE = Rule("where is", _where, (
     Example("where is the cup?", "where is", Tag.VERB),
