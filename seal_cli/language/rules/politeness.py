@@ -205,9 +205,13 @@ def _helped_moving(s: State, i: int) -> Match | None:
 
 def _helped_moving_dropped(s: State, i: int) -> Match | None:
     if s.verb_index < 0 or s.out[s.verb_index].lower != "help" or s.out[s.verb_index].info != HELPED_MOVING[0] or \
-            any(w.tag in (Tag.SEP, Tag.VERB, Tag.PREP) for w in s.out[s.verb_index + 1:]):
+            any(w.tag in (Tag.SEP, Tag.VERB) for w in s.out[s.verb_index + 1:]):
         return None
+    start = s.out[s.verb_index].start
+    helped = next((s.helped_verb(j) for j, w in enumerate(s.words) if w.start == start), 0)
     n = s.words[i].lower == "to"
+    if i + n != helped:
+        return None                     # the verb "help" read as leading comes after the person and what describes them
     return Match(n + 1) if _moving_helped(s, i + n) else None     # "help him *get* to the kitchen": the leading's
 
 
@@ -500,6 +504,7 @@ HELPING = Rule("help a person do", _helping, (
 HELPED_MOVING_RULE = Rule("help a person move", _helped_moving, (
     Example("help grandpa get to the garden", "help", Tag.VERB),
     Example("help him go back to his room", "help", Tag.VERB),
+    Example("help the man in the red shirt go to the bathroom", "help", Tag.VERB),   # words48: described
 ), frozenset(["help"]), "'help X get/go to Y': guide X to Y (the robot leads the person it helps move)")
 HELPED_MOVING_DROPPED = Rule("help a person move: the moving", _helped_moving_dropped, (
     Example("help grandpa get to the garden", "get", ""),
