@@ -54,6 +54,7 @@ from seal_cli.language.english import (
     QUANTIFIERS,
     QUESTION_WORDS,
     RELATIVES,
+    RELAYING,
     REQUESTS,
     SEEN_ASKED,
     SEEN_QUESTIONS,
@@ -521,16 +522,16 @@ class State:
         if not (person in _HELPED and k == i + 1 or capitalised(words[k]) and k == i + 1 or
                 (noun_lemma(person) or person) in self.lexicon.people):
             return 0
-        k = self._described_helped(k + 1) if person not in _HELPED else k + 1
+        k = self.described_at(k + 1) if person not in _HELPED else k + 1
         k += k < len(words) and words[k].lower == "to"
         if k >= len(words) or verb_lemma(words[k].lower) != words[k].lower or self.verb_at(k) is None:
             return 0
         return k
 
-    def _described_helped(self, k: int) -> int:
-        """Where what describes a person helped ends, from ``k`` (words48): up to two phrases of where they are or
-        what they wear ("help the man *in the red shirt* go to the bathroom", "help the lady *at the door* get to the
-        car"), each a preposition, its determiner and up to three open words; ``k`` when none."""
+    def described_at(self, k: int) -> int:
+        """Where what describes a person named ends, from ``k`` (words48): up to two phrases of where they are or
+        what they wear ("help the man *in the red shirt* go to the bathroom", "the lady *at the door* wants you to
+        ..."), each a preposition, its determiner and up to three open words; ``k`` when none."""
         words = self.words
         for _ in range(2):
             if k + 2 >= len(words) or words[k].lower not in LOCATIVE and words[k].lower != "with" or \
@@ -538,6 +539,7 @@ class State:
                 return k
             j = k + 2
             while j < min(len(words), k + 5) and words[j].lower.isalpha() and words[j].lower not in CLOSED and \
+                    words[j].lower not in FINITE and not longest_phrase(words, j, RELAYING) and \
                     not (self._base_unit(j) and j > k + 2):
                 j += 1
             if j == k + 2:

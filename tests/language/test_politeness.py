@@ -28,3 +28,19 @@ def test_a_person_described_and_helped_to_move_is_led(
 
 def test_a_person_described_and_helped_to_do_something_else_is_as_before(library: Library) -> None:
     assert frames("help the man in the hall find his keys", library) == [("Find", {"theme": "key"})]
+
+
+@pytest.mark.parametrize(("text", "want"), [
+    ("the lady at the gate wants you to fetch her a chair", [("Bring", {"theme": "chair", "recipient": "lady"})]),
+    ("the boy in the green jumper asked you to take him to the garden",
+     [("Guide", {"theme": "boy", "goal": "garden"})]),
+    ("Noor, who's in the study, wants you to bring her the post", [("Bring", {"theme": "post", "recipient": "Noor"})]),
+])
+def test_a_request_passed_on_by_a_person_described_is_the_command(
+        text: str, want: list[tuple[str, dict[str, str]]], library: Library) -> None:
+    """words48: "the person at the door wants you to bring them a cup" was refused as a statement, and "Jane, who's at
+    the sofa, wants you to follow her" a Tell of the relative clause: what describes the one who passes the request on
+    (a phrase of place or of clothes, a relative clause between commas) is theirs."""
+    parse = parse_command(text, library)
+    assert frames(text, library) == want
+    assert len(parse.remarks) == 1

@@ -343,7 +343,7 @@ def _relayed(s: State, i: int) -> Match | None:
     clause as its message, or as an unknown verb "mummy"); the subject and its verb are a remark, which a pronoun
     of the command may take up ("bring *him* his glasses": dad)."""
     words = s.words
-    if not any(w.lower == "you" for w in words[i + 1:i + _RELAY_SUBJECT_WORDS + 5]) or \
+    if not any(w.lower == "you" for w in words[i + 1:i + _RELAY_SUBJECT_WORDS + _RELAY_DESCRIBED + 5]) or \
             not all(w.tag == Tag.POLITE for w in s.out):
         return None                                   # no "you" near (the common case)
     low = words[i].lower
@@ -357,6 +357,7 @@ def _relayed(s: State, i: int) -> Match | None:
             j += 1
         if j == k:
             return None
+        j = _relayer_described(s, j)
     n = longest_phrase(words, j, RELAYING)
     if not n:
         return None
@@ -368,6 +369,22 @@ def _relayed(s: State, i: int) -> Match | None:
         return None
     end = k + 1 + m
     return Match(end - i, (merge(words, i, end - i, Tag.POLITE),), remarks=((words[i].start, words[j + n - 1].end),))
+
+
+_RELAY_DESCRIBED = 8
+"""The most words of what describes the one who passes a request on ("the man *at the door* wants you to ...")."""
+
+
+def _relayer_described(s: State, j: int) -> int:
+    """Where what describes the one passing a request on ends, from ``j`` (words48): phrases of where they are or what
+    they wear ("the person *at the door* wants you to ...", :meth:`State.described_at`), or a relative clause set off
+    by commas ("Jane*, who's at the sofa,* wants you to follow her"); ``j`` when none."""
+    words = s.words
+    if j + 2 < len(words) and words[j].lower == "," and (words[j + 1].lower in ("who", "who's", "whose") or
+                                                         words[j + 1].lower == "that"):
+        close = next((k for k in range(j + 2, min(len(words), j + _RELAY_DESCRIBED)) if words[k].lower == ","), None)
+        return close + 1 if close is not None else j
+    return s.described_at(j)
 
 
 def _like_filler(s: State, i: int) -> Match | None:
@@ -532,6 +549,7 @@ RELAYED = Rule("a request passed on", _relayed, (
     Example("granny says you have to shut the window", "granny says you have to", Tag.POLITE),
     Example("Omar asked you to fetch him a towel", "Omar asked you to", Tag.POLITE),
     Example("my brother wants you to open the garage", "my brother wants you to", Tag.POLITE),
+    Example("the lady at the gate wants you to fetch her a chair", "the lady at the gate wants you to", Tag.POLITE),
 ), None, "'X says you have to V', 'X asked you to V': the request passed on is the command, X's words a remark",
    after=frozenset([START, Tag.POLITE]), needs=frozenset(["you"]))
 LIKE_FILLER = Rule("like as a filler", _like_filler, (
