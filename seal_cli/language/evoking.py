@@ -1220,7 +1220,7 @@ class Evoker:
             if owner is not None:                   # "go to Tom's room and tell him ...": Tom
                 return Phrase(self.text[np.start:np.end], owner, None, "person", span=(np.start, np.end))
             return Phrase(self.text[np.start:np.end], np.head_text, None,
-                          "thing" if np.kind == "pronoun" and np.pronoun in ("it", "one") else
+                          "thing" if np.kind == "pronoun" and np.pronoun == "it" else
                           "person" if np.kind == "pronoun" else np.kind, span=(np.start, np.end))
         if np.kind == "place" and np.head is not None and np.head.info == "back":
             source = self.reference.source_before(self.clause_frames)

@@ -17,7 +17,3 @@ def test_a_bare_one_after_a_wish_stands_for_the_thing_wished_for(library: Librar
     theme = parse_command(text, library).frames[0].elements["theme"]
     assert (theme.text, theme.head, theme.kind) == ("one", head, "thing")
 
-
-def test_a_bare_one_with_nothing_said_before_is_a_thing(library: Library) -> None:
-    theme = parse_command("bring him one", library).frames[0].elements["theme"]
-    assert theme.kind == "thing"
