@@ -44,6 +44,7 @@ CLAUSE_START: tuple[Rule, ...] = (
     question_tags.YOU_MODAL_TAGGED,
     lead_ins.REASON_FIRST,
     lead_ins.ROOM_HEADING,
+    lead_ins.TASK_HEADING,
     statements.FOUND_STATED_RULE,
     politeness.POLITENESS,
     negatives.PROHIBITED_FIRST,

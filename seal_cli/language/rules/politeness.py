@@ -389,7 +389,8 @@ def _relayer_described(s: State, j: int) -> int:
 
 def _like_filler(s: State, i: int) -> Match | None:
     words = s.words
-    if s.out and s.out[-1].tag == Tag.POLITE and i + 1 < len(words) and \
+    if s.out and (s.out[-1].tag == Tag.POLITE or s.out[-1].tag == Tag.SEP and s.out[-1].lower != ",") and \
+            i + 1 < len(words) and \
             (s.verb_after(i + 1) or words[i + 1].lower == "," and s.verb_after(i + 2)):
         return Match(1 + (words[i + 1].lower == ","))             # "can you *like* grab my bag": a filler
     return None
@@ -554,7 +555,8 @@ RELAYED = Rule("a request passed on", _relayed, (
    after=frozenset([START, Tag.POLITE]), needs=frozenset(["you"]))
 LIKE_FILLER = Rule("like as a filler", _like_filler, (
     Example("could you like pass me the salt", "like", ""),
-), frozenset(["like"]), "'like' after politeness and before the verb: a filler")
+    Example("go to the shed and then like grab the rake", "like", ""),     # words48: after a joint
+), frozenset(["like"]), "'like' after politeness or a joint and before the verb: a filler")
 SPOKEN_FILLER = Rule("a spoken filler before its comma", _spoken_filler, (
     Example("open the shed and, you know, shut it", "you", ""),
     Example("I mean, grab the mop", "mean", ""),
