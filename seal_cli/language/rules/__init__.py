@@ -159,6 +159,7 @@ INSIDE: tuple[Rule, ...] = (
     statements.QUESTION_ASKER,
     statements.HER_TOLD,
     statements.TOLD,
+    statements.TOLD_AFTER_COLON,
     statements.TOLD_HOW_TO,
     requests.HOW_MANY_SEEN,
     requests.HOW_MANY_DOING,
