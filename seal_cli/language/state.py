@@ -528,6 +528,20 @@ class State:
             return 0
         return k
 
+    def _name_in_past(self, i: int, end: int) -> bool:
+        """Whether a lower-case name the dictionary also lists as a noun ("robin", "paris", "angel") starts a
+        statement of what they did at ``i`` (words48): said bare, first, before a verb's past form that is nothing
+        else ("went", "came", "walked"; maybe after "just"), and taken up after the statement by "him"/"her"/"he"/
+        "she" ("robin went to the kitchen, *follow him*": an unknown verb "robin"). A thing said so ("apple sliced,
+        put it away") is taken up by "it", if at all."""
+        words = self.words
+        first = words[i].lower
+        k = i + 1 + (i + 1 < end and words[i + 1].lower == "just")
+        if capitalised(words[i]) or not first.isalpha() or first in CLOSED or first in self.lexicon.units or \
+                k >= end or not _past_only(words[k].lower):
+            return False
+        return any(w.lower in ("him", "her", "he", "she", "his") for w in words[end:])
+
     def described_at(self, k: int) -> int:
         """Where what describes a person named ends, from ``k`` (words48): up to two phrases of where they are or
         what they wear ("help the man *in the red shirt* go to the bathroom", "the lady *at the door* wants you to
@@ -608,6 +622,8 @@ class State:
             # "grace wants a drink", "dad needs his glasses": a need of a thing stated (words27)
         if not capitalised(words[i]) and lower_case_name(words, i):
             return end                                        # "noah has to get to the garage": a name (words24)
+        if self._name_in_past(i, end):
+            return end                                        # "robin went to the kitchen, follow him" (words48)
         if verb_lemma(first) == first and first not in SUBJECTS:
             return 0                                          # "Grab the cup": a command, maybe an unknown verb
         if self.wish_of_deed(i):

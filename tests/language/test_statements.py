@@ -53,3 +53,15 @@ def test_a_command_said_on_after_a_whole_statement_with_no_mark(
 def test_no_command_starts_inside_a_statement(text: str, library: Library) -> None:
     with pytest.raises(CommandError):
         parse_command(text, library)
+
+
+@pytest.mark.parametrize(("text", "want"), [
+    ("robin went to the kitchen, follow him", [("Follow", {"theme": "him"})]),
+    ("angel came in a minute ago, greet her", [("Greet", {"theme": "her"})]),
+])
+def test_a_lower_case_name_the_dictionary_lists_said_doing_something_is_a_statement(
+        text: str, want: list[tuple[str, dict[str, str]]], library: Library) -> None:
+    """words48: "robin went to the kitchen, follow him" was an unknown verb "robin"; a bare word before a verb's
+    past form, taken up by "him"/"her" after, names someone."""
+    assert frames(text, library) == want
+
