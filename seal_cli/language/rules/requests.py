@@ -249,13 +249,13 @@ with the subject first and a tag, "*you can* see the cup, can't you?", words26).
 
 
 def _asked_alone_last(s: State, i: int) -> bool:
-    """Whether the sentence from ``i`` is a question ending the command, with no particle "out" in it: "can you see
-    the cat anywhere?" asks to find it; "can you see the man by the door? greet him" introduces him (a question
+    """Whether the sentence from ``i`` is a question ending the command (its "?" or the end of the text), with no
+    particle "out" in it: "can you see the cat anywhere?" asks to find it; "can you see the man by the door? greet him" introduces him (a question
     of perception before the command, words24), "can you see the guest out" is Guide's."""
     words = s.words
     end = _sentence_end(s, i)
-    return end < len(words) and words[end].lower == "?" and all(w.lower in END_MARKS for w in words[end:]) and \
-        not any(w.lower == "out" for w in words[i:end])
+    return (end == len(words) or words[end].lower == "?" and all(w.lower in END_MARKS for w in words[end:])) and \
+        not any(w.lower == "out" for w in words[i:end])          # words48: its "?" often left out ("can you see X")
 
 
 _DO_SEEN = frozenset(["do", "does", "don't", "doesn't"])
@@ -2162,6 +2162,7 @@ SEEN_ASKED_RULE = Rule("have you seen", _seen_asked, (
     Example("Did you notice the keys in the hall?", "Did you notice", Tag.VERB),
     Example("has anyone come across my glasses", "has anyone come across", Tag.VERB),
     Example("Do you see anyone in the kitchen?", "Do you see", Tag.VERB),
+    Example("can you see anyone in the garden", "see", Tag.VERB),                  # words48: no "?"
 ), SEEN_ASKED[0] | _DO_SEEN | first_words(SEEN_ASKED[2]),
     "'have you seen X', 'did you notice X', 'can you see X?': find X")
 LEFT_ASKED_RULE = Rule("did someone leave X in a state", _left_asked, (
