@@ -250,8 +250,9 @@ with the subject first and a tag, "*you can* see the cup, can't you?", words26).
 
 def _asked_alone_last(s: State, i: int) -> bool:
     """Whether the sentence from ``i`` is a question ending the command (its "?" or the end of the text), with no
-    particle "out" in it: "can you see the cat anywhere?" asks to find it; "can you see the man by the door? greet him" introduces him (a question
-    of perception before the command, words24), "can you see the guest out" is Guide's."""
+    particle "out" in it: "can you see the cat anywhere?" asks to find it; "can you see the man by the door? greet
+    him" introduces him (a question of perception before the command, words24), "can you see the guest out" is
+    Guide's."""
     words = s.words
     end = _sentence_end(s, i)
     return (end == len(words) or words[end].lower == "?" and all(w.lower in END_MARKS for w in words[end:])) and \
