@@ -311,3 +311,15 @@ def test_a_place_examined_for_anyone_of_a_kind_is_searched_for_them(
 @pytest.mark.parametrize("text", ["check the oven for me", "check the hall for the boss"])
 def test_a_place_examined_for_someone_known_is_looked_at_for_them(library: Library, text: str) -> None:
     assert [f.frame for f in parse_command(text, library).frames] == ["LookAt"]
+
+
+@pytest.mark.parametrize(("text", "goal"), [
+    ("stop by the garage and grab the drill", "the garage"),
+    ("drop by the study", "the study"),
+    ("come by the porch", "the porch"),
+])
+def test_a_visit_said_with_by_is_going(library: Library, text: str, goal: str) -> None:
+    """words48: "stop by the kitchen" was a ToggleOff refused for its "by" phrase, "drop by the office" a Place with
+    no theme; "stop by", "drop by", "come by" are Go's units (framelib/motion.yaml)."""
+    assert _frames(text, library)[0] == ("Go", {"goal": goal})
+    assert _frames("drop the keys by the door", library)[0][0] == "Place"

@@ -1750,6 +1750,10 @@ def _asked_alone(s: State, i: int) -> Match | None:
 _SWITCHED_WORDS = 4
 
 
+_ONWARD = frozenset(["over", "down", "up", "out", "back", "round", "around", "along", "through"])
+"""Adverbs of direction after "on" said of going on ("head *on over* to the kitchen", "go on down"): no switching."""
+
+
 def _switched_alone(s: State, i: int) -> Match | None:
     """"*Lights off* in the hall", "the TV on, please", "kitchen lights off": a short noun phrase (no verb's base
     form first) and "on"/"off", then only where (a preposition and a phrase) or "please" to the sentence's end,
@@ -1772,8 +1776,10 @@ def _switched_alone(s: State, i: int) -> Match | None:
             any(words[j].lower in BE_WORDS or words[j].lower in PREPOSITIONS for j in range(i, k)):
         return None
     if k == i + 1 and (words[k].lower in s.lexicon.apart.get(verb_lemma(first) or first, ()) or
-                       verb_lemma(first) == first and found is not None and first not in s.lexicon.things):
-        return None                               # "hang on", "hold on": a verb and its particle, no thing switched
+                       verb_lemma(first) == first and found is not None and (
+                           first not in s.lexicon.things or k + 1 < len(words) and words[k + 1].lower in _ONWARD)):
+        return None                               # "hang on", "hold on": a verb and its particle, no thing switched;
+        #                                           "head on over to the kitchen": "on" onward, a way (words48)
     unit = SWITCHED_MEANS[words[k].lower]
     parts = tuple(unit.split())
     if parts not in s.lexicon.units.get(parts[0], ()):
