@@ -1602,6 +1602,9 @@ class State:
             return Match(j - i, (merge(words, i, j - i, Tag.SEP), Word("", words[j].start, words[j].start,
                                                                         Tag.VERB, given)),
                          expect=False, verb=given, using=False)
+        if low == "and" and [w.lower for w in words[i + 1:j]] == ["also"] and self.np_starts(j) and \
+                self.prev_tag() in ("WORD", "NAME") and words[j].lower in NP_OPENERS and self.verb_at(j) is None:
+            return Match(j - i, (words[i].tagged(Tag.AND_NP),))   # "an apple *and also* a cola": "and" (words48)
         if low in ("then", "after that", "afterwards", "finally", "after", "before", "while", "once done",
                    "when done") or span > 1 and low != ",":
             again = self._path_again(j)
