@@ -419,8 +419,8 @@ def test_a_thing_and_on_or_off_is_switching_it(library: Library) -> None:
 
 
 def test_please_and_a_verb_no_frame_lists_is_an_error_not_a_thing_asked_for(library: Library) -> None:
-    with pytest.raises(CommandError, match="unknown verb 'enumerate'"):    # it was Bring of "enumerate"
-        parse_command("please enumerate the books on the shelf", library)
+    with pytest.raises(CommandError, match="unknown verb 'polish'"):    # it was Bring of "enumerate"; words48:
+        parse_command("please polish the books on the shelf", library)   # "enumerate" is now Tell's (via "name")
 
 
 def test_where_people_are_doing_something_is_where_to_count_them(library: Library) -> None:

@@ -2673,8 +2673,9 @@ def _asked_to_the_end(s: State, k: int) -> bool:
     m = k + 1
     while m < len(words) and words[m].lower not in END_MARKS:
         low = words[m].lower
-        if low in (",", ";") or s.verb_at(m) is not None and verb_lemma(low) == low:
-            return False
+        if low in (",", ";") or s.verb_at(m) is not None and verb_lemma(low) == low and \
+                words[m - 1].lower not in NP_OPENERS:
+            return False                          # "what is her *name*": a noun after a possessive (words48)
         m += 1
     return m >= len(words) or words[m].lower == "?" or m == len(words) - 1
 
