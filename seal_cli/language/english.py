@@ -102,12 +102,15 @@ SEPARATOR_WORDS = frozenset(["and", "then", ",", ";", ":", "after that", "afterw
                              "after this", "after doing that", "having done that", "after you've done that",
                              "after you have done that", "once you've done that", "once you have done that",
                              "when you've done that", "when you have done that", "once that's done",
-                             "once that is done"])
+                             "once that is done", "after which", "following which"])
 SEQUENCE_ADVERBS = frozenset(["later", "later on", "soon after", "soon afterwards", "shortly after",
-                              "shortly afterwards", "after a while", "in a while", "a bit later", "a little later"])
+                              "shortly afterwards", "after a while", "in a while", "a bit later", "a little later",
+                              "from there"])
 """Adverbs of time that, between a joint and the next clause's verb, say only that it comes after ("meet Ana,
 and *later on* find her in the garden"; "water the plants then *after a while* turn off the tap"): part of the
-joint. Said after a verb's arguments they stay a time ("come back *later*", ``TIME_WORDS``)."""
+joint. Said after a verb's arguments they stay a time ("come back *later*", ``TIME_WORDS``). "*from there*" after a
+joint goes on from the place just reached ("go to the kitchen and *from there* go to the office", words48: refused at
+"there"); after a verb it is a source (``FROM_THERE``)."""
 DEGREE_PHRASES = frozenset(["a little", "a little bit", "a bit", "a tad", "a touch", "a lot", "a crack", "a fraction",
                             "slightly", "somewhat", "fully", "halfway", "all the way"])
 """Noun phrases of degree (Quirk's downtoners and boosters): said after a verb's object ("open the curtains *a
@@ -276,7 +279,8 @@ SPELLINGS = {"pls": "please", "plz": "please", "pleeease": "please", "thx": "tha
              "theres": "there's", "wont": "won't", "cant": "can't", "wheres": "where's", "hows": "how's",
              "ill": "i'll", "id": "i'd", "youll": "you'll", "weve": "we've", "theyve": "they've", "itll": "it'll",
              "frm": "from", "thru": "through", "abt": "about", "cud": "could", "cld": "could", "wud": "would",
-             "shud": "should", "pleez": "please", "ppl": "people", "wats": "what's", "wat's": "what's", "wat": "what"}
+             "shud": "should", "pleez": "please", "ppl": "people", "wats": "what's", "wat's": "what's", "wat": "what",
+             "urself": "yourself", "yrself": "yourself"}
 """Texting spellings of function words ("turn the lights off *pls*", "open it *n* wipe it", "where *r* my keys",
 "tell her *im* late"): read as the word they spell."""
 READ_AS_ONE = {"prior to": "before", "subsequent to": "after"}

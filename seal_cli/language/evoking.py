@@ -23,6 +23,7 @@ from seal_cli.language.english import (
     NUMBER_MEANS,
     PARTICLES,
     ROUTE_NOUNS,
+    SOME_PERSON,
     SPEAKER_PRONOUNS,
     TIME_UNITS,
     WH_WORDS,
@@ -573,11 +574,14 @@ class Evoker:
         searching (a unit said both bare and with "for": "search", "search for"; and a verb of this frame said
         with "for" as this frame says it with another preposition: "look for" beside "look at") take the thing,
         the object where it is sought. "check the oven for me" (for whom), "get a cup for cleaning" (no frame of
-        looking) stay as they were."""
+        looking) stay as they were. People said as anyone of a kind are sought too (:meth:`anyone_sought`: "check
+        the bedroom *for people*", "scan the hall *for anyone wearing a hat*", words48); "for me", "for Sam", "for
+        the boss" say for whom."""
         _, frame, roles, _ = best
         wanted = [x for x in clause.items if isinstance(x, PP) and x.prep == "for" and not x.lead]
         if len(clause.objects) != 1 or len(wanted) != 1 or clause.items[0] is not wanted[0] or \
-                self.roles.kind(wanted[0].np, None, None) == "person" or wanted[0].np.kind != "thing" or \
+                not self.anyone_sought(wanted[0].np) and (
+                    self.roles.kind(wanted[0].np, None, None) == "person" or wanted[0].np.kind != "thing") or \
                 any(u.text.endswith(" for") for u in frame.lexical_units) or \
                 frame.elements and self.types.is_person(frame.elements[0].type):
             return best
@@ -592,6 +596,16 @@ class Evoker:
             return best
         clause.objects, clause.items = said.objects, said.items
         return found
+
+    def anyone_sought(self, np: NP) -> bool:
+        """Whether a phrase names people as anyone of a kind, not someone known: "someone", "anybody", or a noun of
+        people said bare or with "a"/"any"/"some" ("people", "a man in a red shirt", "any guests"); never a name, a
+        personal pronoun or a definite phrase ("me", "Sam", "the boss": for whom)."""
+        if np.pronoun is not None or np.head is None:
+            return (np.pronoun or "") in SOME_PERSON
+        first = self.text[np.start:np.end].split(None, 1)[0].lower()
+        return np.head.tag != "NAME" and self.roles.kind(np, None, None) == "person" and (
+            not np.determined or first in ("a", "an", "any", "some"))
 
     def showing(self, best: Fit, clause: Clause) -> Fit:
         """"*show me* the remote", "show the photo to Jo": a frame that moves a person (Guide: "show" is

@@ -236,9 +236,9 @@ class Reference:
                                                          people[-1] is subjects[-1]):
                 return None                          # "when *the guest* arrives, greet them": one person, "they"
             return people[-1] if people else None    # "there's *a man* at the door, find them": "find" takes any
-        if pronoun not in ("him", "her", "he", "she", "it", "this", "that"):
+        if pronoun not in ("him", "her", "he", "she", "it", "this", "that", "one"):
             return None
-        person = pronoun not in ("it", "this", "that")
+        person = pronoun not in ("it", "this", "that", "one")   # "X wants a cola, bring him *one*" (words48): a thing
         said = [m for m in self._mentions if m.end <= np.start and
                 (m.name or self.types.is_a(noun_lemma(m.head), "person") is True) == person]
         if person and not said and self.types.is_person(frame.element(role).type):

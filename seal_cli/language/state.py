@@ -54,6 +54,7 @@ from seal_cli.language.english import (
     QUANTIFIERS,
     QUESTION_WORDS,
     RELATIVES,
+    RELAYING,
     REQUESTS,
     SEEN_ASKED,
     SEEN_QUESTIONS,
@@ -521,9 +522,43 @@ class State:
         if not (person in _HELPED and k == i + 1 or capitalised(words[k]) and k == i + 1 or
                 (noun_lemma(person) or person) in self.lexicon.people):
             return 0
-        k += 1 + (k + 1 < len(words) and words[k + 1].lower == "to")
+        k = self.described_at(k + 1) if person not in _HELPED else k + 1
+        k += k < len(words) and words[k].lower == "to"
         if k >= len(words) or verb_lemma(words[k].lower) != words[k].lower or self.verb_at(k) is None:
             return 0
+        return k
+
+    def _name_in_past(self, i: int, end: int) -> bool:
+        """Whether a lower-case name the dictionary also lists as a noun ("robin", "paris", "angel") starts a
+        statement of what they did at ``i`` (words48): said bare, first, before a verb's past form that is nothing
+        else ("went", "came", "walked"; maybe after "just"), and taken up after the statement by "him"/"her"/"he"/
+        "she" ("robin went to the kitchen, *follow him*": an unknown verb "robin"). A thing said so ("apple sliced,
+        put it away") is taken up by "it", if at all."""
+        words = self.words
+        first = words[i].lower
+        k = i + 1 + (i + 1 < end and words[i + 1].lower == "just")
+        if capitalised(words[i]) or not first.isalpha() or first in CLOSED or first in self.lexicon.units or \
+                k >= end or not _past_only(words[k].lower):
+            return False
+        return any(w.lower in ("him", "her", "he", "she", "his") for w in words[end:])
+
+    def described_at(self, k: int) -> int:
+        """Where what describes a person named ends, from ``k`` (words48): up to two phrases of where they are or
+        what they wear ("help the man *in the red shirt* go to the bathroom", "the lady *at the door* wants you to
+        ..."), each a preposition, its determiner and up to three open words; ``k`` when none."""
+        words = self.words
+        for _ in range(2):
+            if k + 2 >= len(words) or words[k].lower not in LOCATIVE and words[k].lower != "with" or \
+                    words[k + 1].lower not in DETERMINERS:
+                return k
+            j = k + 2
+            while j < min(len(words), k + 5) and words[j].lower.isalpha() and words[j].lower not in CLOSED and \
+                    words[j].lower not in FINITE and not longest_phrase(words, j, RELAYING) and \
+                    not (self._base_unit(j) and j > k + 2):
+                j += 1
+            if j == k + 2:
+                return k
+            k = j
         return k
 
     def formula(self, i: int) -> int:
@@ -564,8 +599,11 @@ class State:
         if i >= len(words):
             return 0
         end = i
+        first_word = words[i].lower                           # "*I'm* thirsty can you ...": a subject and its verb
         while end < len(words) and words[end].lower not in END_MARKS and words[end].lower not in (",", ";", ":") \
-                and not (end > i + 2 and self.command_resumes(end)):
+                and not (end > i + 2 and self.command_resumes(end) or
+                         end == i + 2 and (self.imperative_unmarked(end) or
+                                           "'" in first_word and self.command_resumes(end))):
             end += 1
         first = words[i].lower
         nxt = words[i + 1].lower if i + 1 < end else ""
@@ -587,6 +625,8 @@ class State:
         if capitalised(words[i]) and first.isalpha() and first not in CLOSED and first not in self.lexicon.units and \
                 (nxt in _BE_STATED or nxt == "'s" and not self.possessed_at(i + 2, end)):
             return end          # "Grace is in the lounge, ...", "Rose's upstairs": no command says "X is" (words49)
+        if self._name_in_past(i, end):
+            return end                                        # "robin went to the kitchen, follow him" (words48)
         if verb_lemma(first) == first and first not in SUBJECTS:
             return 0                                          # "Grab the cup": a command, maybe an unknown verb
         if self.wish_of_deed(i):
@@ -599,10 +639,12 @@ class State:
         if "'" in first and first.split("'")[0] in SUBJECTS | {"you", "who", "what", "here"} and \
                 "'" + first.split("'", 1)[1] in CONTRACTED:
             return end                                        # "we're eating in ten", "i'll be right there"
-        if first in _PLACED_SUBJECTS and nxt in LOCATIVE and self.np_starts(i + 2):
+        if first in _PLACED_SUBJECTS and (nxt in LOCATIVE and self.np_starts(i + 2) or gerund_lemma(nxt)):
             k = i + 2                                         # "*someone in the kitchen is* waving, greet them"
-            while k < end and words[k].lower not in FINITE and self.verb_at(k) is None:
-                k += 1
+            # "*someone raising their left arm* in the office *wants* ...": described by what they do (words48)
+            while k < end and words[k].lower not in FINITE and (self.verb_at(k) is None or
+                                                                words[k - 1].lower in NP_OPENERS):
+                k += 1                                        # "their *left* arm": a noun's word, no verb
             return end if k < end and words[k].lower in FINITE else 0
         if first in SUBJECTS or first == "you" and nxt not in ("can", "could", "will", "would", "should", "must"):
             return end if nxt in FINITE or nxt in CONTRACTED or self.finite_form(i + 1, end) or \
@@ -748,7 +790,34 @@ class State:
         if low in _ASKING_MODALS and m + 2 < len(words) and words[m + 1].lower == "you" and self._base_unit(m + 2):
             return True                          # "robin is at the sofa *can you* guide her there" (words47)
         return low not in CLOSED and words[m - 1].lower in ("there", "here") and self._base_unit(m) and \
-            self.np_starts(m + 1)
+            self.np_starts(m + 1) or self.imperative_unmarked(m)
+
+    def imperative_unmarked(self, m: int) -> bool:
+        """Whether a command said without a mark starts at ``m``, right after a statement that is whole (words48):
+        "angel is thirsty *bring* him a drink", "robin is in the kitchen *bring* him a coke", "the door is open
+        *close* it", "I'm thirsty *please bring* me some water". The statement has a finite verb of its own (or a
+        subject contracted with one: "I'm"); it ends in an open word (an adjective, a noun, a participle: never "to",
+        "can" or "the"); the verb at ``m`` (or after "please") is a verb of the library in its base form, and its
+        object, a pronoun or a determiner, follows. A noun the verb could be ("by the *light* switch") has no object
+        after it."""
+        words = self.words
+        k = m + (words[m].lower == "please")
+        if k + 1 >= len(words) or not self._base_unit(k) or not (
+                words[k + 1].lower in OBJECT_PRONOUNS or words[k + 1].lower in DETERMINERS or
+                words[k + 1].lower in POSSESSIVES):
+            return False
+        before = words[m - 1].lower if m > 0 else ""
+        if not before.isalpha() or before in CLOSED or before in FINITE or self._base_unit(m - 1) and \
+                not is_adjective(before):
+            return False                         # "... *go bring* him a coke": the command starts at "go"
+        for j in range(m - 2, -1, -1):
+            low = words[j].lower
+            if low in END_MARKS or low in (",", ";", "and", "then"):
+                return False
+            if low in FINITE or verb_lemma(low) in LINKING_VERBS and inflected(low) or \
+                    "'" in low and "'" + low.split("'", 1)[1] in CONTRACTED:
+                return j > 0 or "'" in low
+        return False
 
     def _base_unit(self, k: int) -> bool:
         """Whether a verb of the library starts at ``k`` in its base form."""
@@ -1536,6 +1605,9 @@ class State:
             return Match(j - i, (merge(words, i, j - i, Tag.SEP), Word("", words[j].start, words[j].start,
                                                                         Tag.VERB, given)),
                          expect=False, verb=given, using=False)
+        if low == "and" and [w.lower for w in words[i + 1:j]] == ["also"] and self.np_starts(j) and \
+                self.prev_tag() in ("WORD", "NAME") and words[j].lower in NP_OPENERS and self.verb_at(j) is None:
+            return Match(j - i, (words[i].tagged(Tag.AND_NP),))   # "an apple *and also* a cola": "and" (words48)
         if low in ("then", "after that", "afterwards", "finally", "after", "before", "while", "once done",
                    "when done") or span > 1 and low != ",":
             again = self._path_again(j)

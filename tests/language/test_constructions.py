@@ -419,8 +419,8 @@ def test_a_thing_and_on_or_off_is_switching_it(library: Library) -> None:
 
 
 def test_please_and_a_verb_no_frame_lists_is_an_error_not_a_thing_asked_for(library: Library) -> None:
-    with pytest.raises(CommandError, match="unknown verb 'enumerate'"):    # it was Bring of "enumerate"
-        parse_command("please enumerate the books on the shelf", library)
+    with pytest.raises(CommandError, match="unknown verb 'polish'"):    # it was Bring of "enumerate"; words48:
+        parse_command("please polish the books on the shelf", library)   # "enumerate" is now Tell's (via "name")
 
 
 def test_where_people_are_doing_something_is_where_to_count_them(library: Library) -> None:
@@ -4329,7 +4329,7 @@ def test_what_the_robot_will_find_at_a_place_said_first_is_where_it_is(
     ("the bin is full could you take it to the garage", [("Bring", {"theme": "bin", "goal": "garage"})]),
     ("nadia is on the porch she wants to go to the attic could you take her there",
      [("Guide", {"theme": "nadia", "source": "porch", "goal": "attic"})]),
-    ("the gate is open close it", None),        # a bare verb, no question: refused as a statement, as before
+    ("the gate is open close it", [("Close", {"theme": "gate"})]),   # words48: a whole statement, then the command
 ])
 def test_a_statement_run_on_into_a_request_put_as_a_question_is_a_remark(
         text: str, want: list[tuple[str, dict[str, str]]], library: Library) -> None:

@@ -293,3 +293,33 @@ def test_a_putting_in_said_last_after_the_thing_was_taken_to_a_place_is_in_there
     assert goal.refers_to == (0, "goal") and goal.head == place
     other = parse_command("take the pear to the fridge, put the plum in", library)
     assert "goal" not in other.frames[1].elements
+
+
+@pytest.mark.parametrize(("text", "theme", "ground"), [
+    ("check the attic for people", "people", "the attic"),
+    ("scan the hall for anyone wearing a hat", "anyone wearing a hat", "the hall"),
+    ("search the porch for a woman in a green coat", "a woman in a green coat", "the porch"),
+    ("look around the garden for any guests", "any guests", "the garden"),
+])
+def test_a_place_examined_for_anyone_of_a_kind_is_searched_for_them(
+        library: Library, text: str, theme: str, ground: str) -> None:
+    """words48: "check the bedroom for people" was a LookAt of "the bedroom for people" (a person after "for" says
+    for whom); people said as anyone of a kind are sought, as a thing is."""
+    assert _frames(text, library) == [("Find", {"theme": theme, "ground": ground})]
+
+
+@pytest.mark.parametrize("text", ["check the oven for me", "check the hall for the boss"])
+def test_a_place_examined_for_someone_known_is_looked_at_for_them(library: Library, text: str) -> None:
+    assert [f.frame for f in parse_command(text, library).frames] == ["LookAt"]
+
+
+@pytest.mark.parametrize(("text", "goal"), [
+    ("stop by the garage and grab the drill", "the garage"),
+    ("drop by the study", "the study"),
+    ("come by the porch", "the porch"),
+])
+def test_a_visit_said_with_by_is_going(library: Library, text: str, goal: str) -> None:
+    """words48: "stop by the kitchen" was a ToggleOff refused for its "by" phrase, "drop by the office" a Place with
+    no theme; "stop by", "drop by", "come by" are Go's units (framelib/motion.yaml)."""
+    assert _frames(text, library)[0] == ("Go", {"goal": goal})
+    assert _frames("drop the keys by the door", library)[0][0] == "Place"

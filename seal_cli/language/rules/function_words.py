@@ -268,10 +268,11 @@ def _from_there(s: State, i: int) -> Match | None:
 
 
 def _particle_before_object(s: State, i: int) -> Match | None:
-    """"bring *in* the washing", "hand *in* the form": "in" right after a verb that hands a thing to someone (a unit of
-    a frame with a recipient, no verb of saying) and before its object is the verb's particle, as "bring the washing
-    *in*" says it (it was a Guide from the washing, "take in" aside; words30). Only before a determiner or a
-    possessive: "put in the fridge" (no such verb) keeps its place."""
+    """"bring *in* the washing", "hand *in* the form", "bring *over* a cola to Mia" (words48): "in" or "over" right
+    after a verb that hands a thing to someone (a unit of a frame with a recipient, no verb of saying) and before its
+    object is the verb's particle, as "bring the washing *in*" says it (it was a Guide from the washing, "take in"
+    aside; words30; "bring over a cola" brought from the cola). Only before a determiner or a possessive: "put in the
+    fridge" (no such verb) keeps its place."""
     if s.prev_tag() != Tag.VERB or s.verb_index != len(s.out) - 1 or i + 1 >= len(s.words):
         return None
     unit = str(s.out[-1].info)
@@ -282,7 +283,7 @@ def _particle_before_object(s: State, i: int) -> Match | None:
     end = next((k for k in range(i + 2, end) if s.words[k].lower in PREPOSITIONS), end)
     if any(is_premises(noun_lemma(w.lower) or w.lower) for w in s.words[i + 2:end]):
         return None                 # "bring (it) in the kitchen": a place, where it goes
-    return s.emit(i, 1, Tag.PARTICLE, "in")
+    return s.emit(i, 1, Tag.PARTICLE, s.words[i].lower)
 
 
 def _particle_of_no_motion(s: State, i: int) -> Match | None:
@@ -596,7 +597,9 @@ OUT_OF_THE_HOUSE = Rule("a person seen out", _seen_out, (
 PARTICLE_BEFORE_OBJECT = Rule("in before the object", _particle_before_object, (
     Example("bring in the washing", "in", Tag.PARTICLE),
     Example("could you hand in my form", "in", Tag.PARTICLE),
-), frozenset(["in"]), "'bring in the washing': the verb's particle before its object, the clause naming no place")
+    Example("bring over a cola to Mia", "over", Tag.PARTICLE),          # words48: "over" as "bring a cola over"
+), frozenset(["in", "over"]), "'bring in the washing', 'bring over a cola': the verb's particle before its object, the "
+   "clause naming no place")
 FORM_FOR_FROM = Rule("'form' typed for 'from'", _form_for_from, (
     Example("pick up the ladle form the drawer", "form", Tag.PREP),
     Example("bring me a pear form the bowl", "form", Tag.PREP),

@@ -211,6 +211,23 @@ _HEADING_MARKS = frozenset([":", ";", ".", ","])
 tokenizer reads a dash as ";")."""
 
 
+_TASK_HEADINGS = frozenset(["task", "command", "instruction", "instructions", "request", "order", "orders", "todo",
+                            "step", "next"])
+"""Nouns that head what follows as the robot's task ("*Task:* bring me a cola", "*Instructions -* go to the kitchen",
+words48), as a form or a list labels it."""
+
+
+def _task_heading(s: State, i: int) -> Match | None:
+    """A label of the task before the command, with a colon or a dash after it ("*Task:* go to the kitchen and find
+    the milk", "*Command -* bring me a cola"; words48: an unknown verb "task"): nothing, as "robot:" is (the tokenizer
+    reads a dash as ";"). Only where the command starts, before a verb; "task" with no mark is no label."""
+    words = s.words
+    if any(w.tag != Tag.POLITE for w in s.out) or words[i].lower not in _TASK_HEADINGS or i + 2 >= len(words) or \
+            words[i + 1].lower not in (":", ";") or not s.verb_after(i + 2):
+        return None
+    return Match(2, (merge(words, i, 2, Tag.POLITE),))
+
+
 def _room_heading(s: State, i: int) -> Match | None:
     """A room said alone before the command, as a heading, with a colon, a dash, a full stop or a comma after it
     ("*Bedroom:* find Jane", "*the pantry.* find the tuna", "*Office -* count the people"; words39): where the
@@ -524,6 +541,10 @@ ROOM_HEADING = Rule("a room said as a heading", _room_heading, (
     Example("the hallway - count the boxes", "hallway", Tag.WORD),
 ), None, "a room alone and a colon, dash or stop before the command: where it is done ('in the garage, ...')",
    needs=_HEADING_MARKS)
+TASK_HEADING = Rule("the task labelled", _task_heading, (
+    Example("Task: go to the porch and fetch the mat", "Task:", Tag.POLITE),
+    Example("command - bring me the scissors", "command -", Tag.POLITE),
+), _TASK_HEADINGS, "'Task:' or 'Command -' before the command: a label, nothing to do")
 REASON_FIRST = Rule("a reason said first", _reason_first, (
     Example("Since you're in the shed anyway, grab the rake", "rake", Tag.WORD),
     Example("now that Sam is here, open the gate", "gate", Tag.WORD),

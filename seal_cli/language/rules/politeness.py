@@ -205,9 +205,13 @@ def _helped_moving(s: State, i: int) -> Match | None:
 
 def _helped_moving_dropped(s: State, i: int) -> Match | None:
     if s.verb_index < 0 or s.out[s.verb_index].lower != "help" or s.out[s.verb_index].info != HELPED_MOVING[0] or \
-            any(w.tag in (Tag.SEP, Tag.VERB, Tag.PREP) for w in s.out[s.verb_index + 1:]):
+            any(w.tag in (Tag.SEP, Tag.VERB) for w in s.out[s.verb_index + 1:]):
         return None
+    start = s.out[s.verb_index].start
+    helped = next((s.helped_verb(j) for j, w in enumerate(s.words) if w.start == start), 0)
     n = s.words[i].lower == "to"
+    if i + n != helped:
+        return None                     # the verb "help" read as leading comes after the person and what describes them
     return Match(n + 1) if _moving_helped(s, i + n) else None     # "help him *get* to the kitchen": the leading's
 
 
@@ -339,7 +343,7 @@ def _relayed(s: State, i: int) -> Match | None:
     clause as its message, or as an unknown verb "mummy"); the subject and its verb are a remark, which a pronoun
     of the command may take up ("bring *him* his glasses": dad)."""
     words = s.words
-    if not any(w.lower == "you" for w in words[i + 1:i + _RELAY_SUBJECT_WORDS + 5]) or \
+    if not any(w.lower == "you" for w in words[i + 1:i + _RELAY_SUBJECT_WORDS + _RELAY_DESCRIBED + 5]) or \
             not all(w.tag == Tag.POLITE for w in s.out):
         return None                                   # no "you" near (the common case)
     low = words[i].lower
@@ -353,6 +357,7 @@ def _relayed(s: State, i: int) -> Match | None:
             j += 1
         if j == k:
             return None
+        j = _relayer_described(s, j)
     n = longest_phrase(words, j, RELAYING)
     if not n:
         return None
@@ -366,9 +371,26 @@ def _relayed(s: State, i: int) -> Match | None:
     return Match(end - i, (merge(words, i, end - i, Tag.POLITE),), remarks=((words[i].start, words[j + n - 1].end),))
 
 
+_RELAY_DESCRIBED = 8
+"""The most words of what describes the one who passes a request on ("the man *at the door* wants you to ...")."""
+
+
+def _relayer_described(s: State, j: int) -> int:
+    """Where what describes the one passing a request on ends, from ``j`` (words48): phrases of where they are or what
+    they wear ("the person *at the door* wants you to ...", :meth:`State.described_at`), or a relative clause set off
+    by commas ("Jane*, who's at the sofa,* wants you to follow her"); ``j`` when none."""
+    words = s.words
+    if j + 2 < len(words) and words[j].lower == "," and (words[j + 1].lower in ("who", "who's", "whose") or
+                                                         words[j + 1].lower == "that"):
+        close = next((k for k in range(j + 2, min(len(words), j + _RELAY_DESCRIBED)) if words[k].lower == ","), None)
+        return close + 1 if close is not None else j
+    return s.described_at(j)
+
+
 def _like_filler(s: State, i: int) -> Match | None:
     words = s.words
-    if s.out and s.out[-1].tag == Tag.POLITE and i + 1 < len(words) and \
+    if s.out and (s.out[-1].tag == Tag.POLITE or s.out[-1].tag == Tag.SEP and s.out[-1].lower != ",") and \
+            i + 1 < len(words) and \
             (s.verb_after(i + 1) or words[i + 1].lower == "," and s.verb_after(i + 2)):
         return Match(1 + (words[i + 1].lower == ","))             # "can you *like* grab my bag": a filler
     return None
@@ -500,6 +522,7 @@ HELPING = Rule("help a person do", _helping, (
 HELPED_MOVING_RULE = Rule("help a person move", _helped_moving, (
     Example("help grandpa get to the garden", "help", Tag.VERB),
     Example("help him go back to his room", "help", Tag.VERB),
+    Example("help the man in the red shirt go to the bathroom", "help", Tag.VERB),   # words48: described
 ), frozenset(["help"]), "'help X get/go to Y': guide X to Y (the robot leads the person it helps move)")
 HELPED_MOVING_DROPPED = Rule("help a person move: the moving", _helped_moving_dropped, (
     Example("help grandpa get to the garden", "get", ""),
@@ -527,11 +550,13 @@ RELAYED = Rule("a request passed on", _relayed, (
     Example("granny says you have to shut the window", "granny says you have to", Tag.POLITE),
     Example("Omar asked you to fetch him a towel", "Omar asked you to", Tag.POLITE),
     Example("my brother wants you to open the garage", "my brother wants you to", Tag.POLITE),
+    Example("the lady at the gate wants you to fetch her a chair", "the lady at the gate wants you to", Tag.POLITE),
 ), None, "'X says you have to V', 'X asked you to V': the request passed on is the command, X's words a remark",
    after=frozenset([START, Tag.POLITE]), needs=frozenset(["you"]))
 LIKE_FILLER = Rule("like as a filler", _like_filler, (
     Example("could you like pass me the salt", "like", ""),
-), frozenset(["like"]), "'like' after politeness and before the verb: a filler")
+    Example("go to the shed and then like grab the rake", "like", ""),     # words48: after a joint
+), frozenset(["like"]), "'like' after politeness or a joint and before the verb: a filler")
 SPOKEN_FILLER = Rule("a spoken filler before its comma", _spoken_filler, (
     Example("open the shed and, you know, shut it", "you", ""),
     Example("I mean, grab the mop", "mean", ""),

@@ -17,6 +17,7 @@ from seal_cli.language.english import (
     ASKED_ALONE,
     BE_WORDS,
     CHECK_WHETHER,
+    CONTRACTED,
     DETERMINERS,
     DIRECTIONS,
     END_MARKS,
@@ -125,7 +126,8 @@ def _question(s: State, i: int) -> Match | None:
     if QUESTION_MEANS not in s.lexicon.units or i + 1 >= len(words) or words[i + 1].lower in END_MARKS:
         return None
     nxt = words[i + 1].lower
-    if nxt not in ("is", "are", "'s", "was", "were") and not nxt.isalpha() and not nxt.isdigit() or \
+    if nxt not in ("is", "are", "'s", "was", "were") and not nxt.isalpha() and not nxt.isdigit() and \
+            not _contracted_subject(nxt) or \
             _phrase(s, i, _PSEUDO_CLEFTS):      # "which *3* items on the table are the thinnest?" (words41)
         return None                               # "what I need is X": a wish (``WISHED_STATE``), no question
     end = _asked_again_cut(s, i, s.speech_end(i))  # the question, whatever its shape, is what to tell
@@ -133,6 +135,16 @@ def _question(s: State, i: int) -> Match | None:
         return None                               # "what is": no question yet
     return Match(end - i, (_unsaid(words[i].start, Tag.VERB, QUESTION_MEANS), s.emit(i, end - i, Tag.SAID).words[0]),
                  expect=False, verb=QUESTION_MEANS, using=False)
+
+
+def _contracted_subject(low: str) -> bool:
+    """Whether a word is a subject pronoun contracted with its verb ("*they're*", "she's", "you've"): a question goes
+    on with it as with "they are" ("... and what *they're* wearing", words48: was an unknown verb "what")."""
+    subject, _, rest = low.partition("'")
+    return bool(rest) and subject in _SUBJECT_PRONOUNS and "'" + rest in CONTRACTED
+
+
+_SUBJECT_PRONOUNS = frozenset(["i", "you", "he", "she", "it", "we", "they", "there"])
 
 
 def _asked_again_cut(s: State, i: int, end: int) -> int:
@@ -239,13 +251,14 @@ with the subject first and a tag, "*you can* see the cup, can't you?", words26).
 
 
 def _asked_alone_last(s: State, i: int) -> bool:
-    """Whether the sentence from ``i`` is a question ending the command, with no particle "out" in it: "can you see
-    the cat anywhere?" asks to find it; "can you see the man by the door? greet him" introduces him (a question
-    of perception before the command, words24), "can you see the guest out" is Guide's."""
+    """Whether the sentence from ``i`` is a question ending the command (its "?" or the end of the text), with no
+    particle "out" in it: "can you see the cat anywhere?" asks to find it; "can you see the man by the door? greet
+    him" introduces him (a question of perception before the command, words24), "can you see the guest out" is
+    Guide's."""
     words = s.words
     end = _sentence_end(s, i)
-    return end < len(words) and words[end].lower == "?" and all(w.lower in END_MARKS for w in words[end:]) and \
-        not any(w.lower == "out" for w in words[i:end])
+    return (end == len(words) or words[end].lower == "?" and all(w.lower in END_MARKS for w in words[end:])) and \
+        not any(w.lower == "out" for w in words[i:end])          # words48: its "?" often left out ("can you see X")
 
 
 _DO_SEEN = frozenset(["do", "does", "don't", "doesn't"])
@@ -882,6 +895,33 @@ def _found_out_thing(s: State, i: int) -> Match | None:
     last = words[i + n - 1].end
     return Match(end - i, (Word(s.text_of(words[i].start, last), words[i].start, last, Tag.VERB, QUESTION_MEANS),
                            _unsaid(last, Tag.PRON, None, _SPEAKER), s.emit(i + n, end - i - n, Tag.SAID).words[0]),
+                 expect=False, verb=QUESTION_MEANS, using=False)
+
+
+_LEARNING = frozenset(["find", "get", "learn", "discover", "identify", "obtain", "determine", "ascertain",
+                       "establish", "check"])
+"""Verbs that, said of what the robot reports of a person (``INFORMATION``: "the name of X", "their pose"), learn
+it as "find out" does (words48): a name is no thing to fetch or look for."""
+
+
+def _information_learnt(s: State, i: int) -> Match | None:
+    """"*Find the name of* the person at the door", "get the pose of the man by the sofa", "learn their name": a verb
+    of finding or getting (``_LEARNING``) said of a person's information (``INFORMATION`` after "the" and before
+    "of", or after a possessive) learns it, and what is learnt is told (``QUESTION_MEANS``, to the speaker), as
+    "find out the name of ..." is (``_found_out_thing``): it was a Pick or a Find of "the name". "get me the name
+    of X" is ``INFORMATION_GIVEN``'s; "find the person's keys" names no information."""
+    words = s.words
+    if words[i].lower not in _LEARNING or i + 2 >= len(words) or QUESTION_MEANS not in s.lexicon.units or \
+            words[i + 2].lower not in INFORMATION:
+        return None
+    det = words[i + 1].lower
+    if not (det == "the" and i + 3 < len(words) and words[i + 3].lower == "of" or
+            det in _INFO_DETERMINERS and det != "the"):
+        return None
+    end = s.speech_end(i + 1)
+    last = words[i].end
+    return Match(end - i, (Word(s.text_of(words[i].start, last), words[i].start, last, Tag.VERB, QUESTION_MEANS),
+                           _unsaid(last, Tag.PRON, None, _SPEAKER), s.emit(i + 1, end - i - 1, Tag.SAID).words[0]),
                  expect=False, verb=QUESTION_MEANS, using=False)
 
 
@@ -1763,6 +1803,10 @@ def _asked_alone(s: State, i: int) -> Match | None:
 _SWITCHED_WORDS = 4
 
 
+_ONWARD = frozenset(["over", "down", "up", "out", "back", "round", "around", "along", "through"])
+"""Adverbs of direction after "on" said of going on ("head *on over* to the kitchen", "go on down"): no switching."""
+
+
 def _switched_alone(s: State, i: int) -> Match | None:
     """"*Lights off* in the hall", "the TV on, please", "kitchen lights off": a short noun phrase (no verb's base
     form first) and "on"/"off", then only where (a preposition and a phrase) or "please" to the sentence's end,
@@ -1785,8 +1829,10 @@ def _switched_alone(s: State, i: int) -> Match | None:
             any(words[j].lower in BE_WORDS or words[j].lower in PREPOSITIONS for j in range(i, k)):
         return None
     if k == i + 1 and (words[k].lower in s.lexicon.apart.get(verb_lemma(first) or first, ()) or
-                       verb_lemma(first) == first and found is not None and first not in s.lexicon.things):
-        return None                               # "hang on", "hold on": a verb and its particle, no thing switched
+                       verb_lemma(first) == first and found is not None and (
+                           first not in s.lexicon.things or k + 1 < len(words) and words[k + 1].lower in _ONWARD)):
+        return None                               # "hang on", "hold on": a verb and its particle, no thing switched;
+        #                                           "head on over to the kitchen": "on" onward, a way (words48)
     unit = SWITCHED_MEANS[words[k].lower]
     parts = tuple(unit.split())
     if parts not in s.lexicon.units.get(parts[0], ()):
@@ -2148,6 +2194,7 @@ QUESTION = Rule("bare question", _question, (
     Example("which of the bottles in the pantry is the biggest?", "", Tag.VERB),
     Example("who is in the kitchen?", "", Tag.VERB),
     Example("who is knocking on the gate, would you say?", "who is knocking on the gate", Tag.SAID),
+    Example("tell me how many guests are in the hall and what they're eating", "what they're eating", Tag.SAID),
 ), QUESTION_WORDS, "a question where a command starts: 'tell me' and the question")
 WHERE = Rule("where is", _where, (
     Example("where is the cup?", "where is", Tag.VERB),
@@ -2175,6 +2222,7 @@ SEEN_ASKED_RULE = Rule("have you seen", _seen_asked, (
     Example("Did you notice the keys in the hall?", "Did you notice", Tag.VERB),
     Example("has anyone come across my glasses", "has anyone come across", Tag.VERB),
     Example("Do you see anyone in the kitchen?", "Do you see", Tag.VERB),
+    Example("can you see anyone in the garden", "see", Tag.VERB),                  # words48: no "?"
 ), SEEN_ASKED[0] | _DO_SEEN | first_words(SEEN_ASKED[2]),
     "'have you seen X', 'did you notice X', 'can you see X?': find X")
 LEFT_ASKED_RULE = Rule("did someone leave X in a state", _left_asked, (
@@ -2382,6 +2430,12 @@ FOUND_OUT_THING = Rule("find out a thing", _found_out_thing, (
     Example("find out the name of the person at the door", "the name of the person at the door", Tag.SAID),
     Example("figure out the time and tell Jo", "the time", Tag.SAID),
 ), first_words(_LEARNED), "'find out the name of X': tell the name of X (what is learnt is told, not searched for)")
+INFORMATION_LEARNT = Rule("a person's information learnt", _information_learnt, (
+    Example("find the name of the woman at the gate", "the name of the woman at the gate", Tag.SAID),
+    Example("go to the porch, get the pose of the man there and tell me", "the pose of the man there", Tag.SAID),
+    Example("learn their name", "learn", Tag.VERB),
+), _LEARNING, "'get the name of X', 'learn their name': tell the name of X (learnt, not fetched)",
+   needs=INFORMATION)
 ASKED_OF_PERSON = Rule("found out by asking", _asked_of_person, (
     Example("find out if anna wants coffee", "find out", Tag.VERB),
     Example("check whether the guest is staying for dinner", "the guest is staying for dinner", Tag.SAID),
@@ -2679,8 +2733,9 @@ def _asked_to_the_end(s: State, k: int) -> bool:
     m = k + 1
     while m < len(words) and words[m].lower not in END_MARKS:
         low = words[m].lower
-        if low in (",", ";") or s.verb_at(m) is not None and verb_lemma(low) == low:
-            return False
+        if low in (",", ";") or s.verb_at(m) is not None and verb_lemma(low) == low and \
+                words[m - 1].lower not in NP_OPENERS:
+            return False                          # "what is her *name*": a noun after a possessive (words48)
         m += 1
     return m >= len(words) or words[m].lower == "?" or m == len(words) - 1
 

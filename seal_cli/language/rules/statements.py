@@ -144,6 +144,19 @@ def _told(s: State, i: int) -> Match | None:
     return None
 
 
+def _told_after_colon(s: State, i: int) -> Match | None:
+    """"tell jane*:* dinner is ready", "say to the man at the door: come in" (words48): a colon after the one a verb
+    of saying tells opens what is said, as "that" does; the colon was read as a word of the person ("jane:", head
+    ":"). What follows it, up to where the command goes on, is said whole; the colon itself is dropped."""
+    words = s.words
+    if words[i].lower != ":" or not s.speech or s.prev_tag() not in (Tag.WORD, Tag.NAME, Tag.PRON, Tag.LABEL) or \
+            i + 1 >= len(words) or words[i + 1].lower in END_MARKS:
+        return None
+    end = s.speech_end(i + 1)
+    said = s.emit(i + 1, end - i - 1, Tag.SAID).words[0]
+    return Match(end - i, (said,))
+
+
 def _remark_unmarked(s: State, i: int) -> Match | None:
     low = s.words[i].lower
     if s.expect_verb or s.prev_tag() not in (Tag.WORD, Tag.NAME, Tag.PRON, Tag.PARTICLE, Tag.LABEL, Tag.HERE) or \
@@ -185,6 +198,9 @@ ASIDE = Rule("sentence beside the command", _aside, (
     Example("Bogdan has a question; answer it for him", "Bogdan has a question;", Tag.POLITE),
     Example("see the man by the window? greet him", "see the man by the window?", Tag.POLITE),
     Example("on the sofa there's a blanket, bring it to me", "on the sofa there's a blanket,", Tag.POLITE),
+    Example("someone waving in the hall wants a towel, take them one", "someone waving in the hall wants a towel,",
+            Tag.POLITE),                                          # words48: described by what they do
+    Example("the gate is open close it", "the gate is open", Tag.POLITE),   # words48: the command said on, no mark
 ), None, "a greeting, a statement with no verb of the library, or 'see X?', where a command should start")
 QUESTION_ASKER = Rule("whose question, asked", _question_asker, (
     Example("answer whatever the man at the door asks you", "", Tag.OF),
@@ -211,6 +227,11 @@ TOLD = Rule("told without that", _told, (
     Example("tell the kids dinner is ready", "dinner is ready", Tag.SAID),
     Example("tell grandma lunch is ready", "lunch is ready", Tag.SAID),
 ), None, "what is told without 'that', right after the person told",
+   after=frozenset([Tag.WORD, Tag.NAME, Tag.PRON, Tag.LABEL]))
+TOLD_AFTER_COLON = Rule("told after a colon", _told_after_colon, (
+    Example("tell grandpa: the taxi is here", "the taxi is here", Tag.SAID),
+    Example("say to the man at the gate: come in", "come in", Tag.SAID),
+), frozenset([":"]), "a colon after the person told: what follows is what is said",
    after=frozenset([Tag.WORD, Tag.NAME, Tag.PRON, Tag.LABEL]))
 TOLD_HOW_TO = Rule("how to, told", _told_how_to, (
     Example("Explain to Robin how to get to the kitchen.", "how to get to the kitchen", Tag.SAID),
