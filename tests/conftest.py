@@ -28,11 +28,16 @@ _CACHE_MADE: list[str] = []
 
 def pytest_configure(config: pytest.Config) -> None:
     """The tests' cache of read libraries and word tables lives in a folder of their own, never in
-    the user's ``~/.cache/seal`` (subprocesses the tests start inherit it)."""
+    the user's ``~/.cache/seal`` (subprocesses the tests start inherit it). The subprocesses run this tree's
+    ``seal_cli`` (its folder first on ``PYTHONPATH``), not whichever one the venv installed: a worktree's tests
+    test the worktree."""
     if "SEAL_CACHE_DIR" not in os.environ:
         folder = tempfile.mkdtemp(prefix="seal-test-cache-")
         _CACHE_MADE.append(folder)
         os.environ["SEAL_CACHE_DIR"] = folder
+    paths = os.environ.get("PYTHONPATH", "").split(os.pathsep)
+    if paths[0] != str(ROOT):
+        os.environ["PYTHONPATH"] = os.pathsep.join([str(ROOT), *filter(None, paths)])
 
 
 def pytest_unconfigure(config: pytest.Config) -> None:

@@ -159,8 +159,20 @@ def test_the_graph_sees_lazy_imports_and_ignores_type_only_ones(tmp_path: Path) 
     assert cycles(graph) == [["pkg.a", "pkg.b", "pkg.c", "pkg.sub.d"]]
 
 
-def test_no_import_cycles() -> None:
-    found = cycles(import_graph())
+@pytest.fixture(scope="module")
+def package_graph() -> dict[str, set[str]]:
+    """The package's import graph, read once for the tests of this module (parsing every file takes seconds)."""
+    return import_graph()
+
+
+@pytest.fixture(scope="module")
+def package_imports() -> dict[str, list[str]]:
+    """Every dotted name each module of the package imports (:func:`imported_names`), read once."""
+    return {module: list(imported_names(module, path)) for module, path in module_files().items()}
+
+
+def test_no_import_cycles(package_graph: dict[str, set[str]]) -> None:
+    found = cycles(package_graph)
     assert not found, "import cycles (lazy imports count): " + "; ".join(" ↔ ".join(c) for c in found)
 
 
@@ -175,8 +187,8 @@ def test_every_subpackage_states_its_layering() -> None:
 
 
 @pytest.mark.parametrize("package", SUBPACKAGES)
-def test_subpackages_keep_their_layering(package: str) -> None:
-    graph = import_graph()
+def test_subpackages_keep_their_layering(package: str, package_graph: dict[str, set[str]]) -> None:
+    graph = package_graph
     allowed, never = layering(package)
     broken = []
     for module, deps in sorted(graph.items()):
@@ -191,35 +203,35 @@ def test_subpackages_keep_their_layering(package: str) -> None:
     assert not broken, f"seal_cli/{package}/__init__.py's rule is broken: " + "; ".join(broken)
 
 
-def test_base_modules_import_only_base_modules() -> None:
-    graph = import_graph()
+def test_base_modules_import_only_base_modules(package_graph: dict[str, set[str]]) -> None:
+    graph = package_graph
     bad = sorted(f"{m} imports {d}" for m, deps in graph.items() if _area(m) in BASE
                  for d in deps if _area(d) not in BASE)
     assert not bad
 
 
-def test_only_the_version_is_taken_from_the_public_api_inside_the_package() -> None:
+def test_only_the_version_is_taken_from_the_public_api_inside_the_package(
+        package_imports: dict[str, list[str]]) -> None:
     """``seal_cli/__init__.py`` loads its names lazily from every subpackage (``_HOMES``): a module that
     took one of them from the facade would close a cycle the graph cannot see."""
-    bad = sorted(f"{module} imports {name}" for module, path in module_files().items()
-                 for name in imported_names(module, path)
+    bad = sorted(f"{module} imports {name}" for module, names in package_imports.items() for name in names
                  if name.rpartition(".")[0] == "seal_cli" and name.rpartition(".")[2] in seal_cli._WHERE)
     assert not bad
 
 
-def test_nothing_imports_cli() -> None:
-    graph = import_graph()
+def test_nothing_imports_cli(package_graph: dict[str, set[str]]) -> None:
+    graph = package_graph
     users = sorted(f"{m} → {d}" for m, deps in graph.items() for d in deps
                    if _area(d) == "cli" and _area(m) != "cli" and m != "seal_cli.__main__")
     assert not users
 
 
-def test_engine_modules_never_import_typer_or_rich() -> None:
+def test_engine_modules_never_import_typer_or_rich(package_imports: dict[str, list[str]]) -> None:
     bad = []
-    for module, path in module_files().items():
+    for module, names in package_imports.items():
         if _area(module) == "cli":
             continue
-        for name in imported_names(module, path):
+        for name in names:
             if name.split(".")[0] in ("typer", "rich", "click"):
                 bad.append(f"{module} imports {name}")
     assert not bad

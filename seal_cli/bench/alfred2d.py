@@ -326,6 +326,7 @@ def load_suite(data_dir: str | Path, split: str, *, limit: int | None = None,
         raise SealError(f"unknown task type {unknown[0]!r}; ALFRED's are {', '.join(TASK_TYPES)}")
     counts: Counter[str] = Counter()
     episodes = []
+    wanted = tuple(types or TASK_TYPES)
     for episode in read_trials(data_dir, split, plans):
         if types and episode.group not in types:
             continue
@@ -333,6 +334,8 @@ def load_suite(data_dir: str | Path, split: str, *, limit: int | None = None,
             continue
         counts[episode.group] += 1
         episodes.append(episode)
+        if limit is not None and sample is None and all(counts[t] >= limit for t in wanted):
+            break   # every type has its first ``limit``: the rest of the file (35 MB for train) is not read
     if sample is not None:
         episodes = _stratified(episodes, sample)
     suite = Suite(plans, episodes, Path(data_dir), movable)

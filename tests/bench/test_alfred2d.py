@@ -274,3 +274,17 @@ def test_place_spread_is_the_share_of_the_pivot_s_clearance_a_thing_lies_at(suit
     assert 0.0 < got[1] < 2.0   # a thing lies on its receptacle, about as far from the pivot as the pivot's clearance
     with pytest.raises(SealError, match="no thing starts"):
         place_spread([], suite.floor_plans)
+
+
+def test_a_limit_reads_the_trials_only_until_each_type_has_its_first(tmp_path: Path, shared_data: Path) -> None:
+    """``limit``: the first trials of each type, in file order; once every type asked for has them the rest of the
+    file is not read (the train split is 35 MB): a bad line after them is never met, one before them is."""
+    (tmp_path / "floorplans.json").write_text(json.dumps(_one_plan(shared_data)))
+    trial = _a_trial(shared_data, next(iter(_one_plan(shared_data)["floor_plans"])))
+    kind = trial["task"]["type"]
+    lines = [json.dumps({**trial, "task_id": f"t{k}"}) for k in range(3)]
+    (tmp_path / "trials_x.jsonl").write_text("\n".join([*lines, "{not json"]) + "\n")
+    suite = load_suite(tmp_path, "x", limit=2, types=[kind], with_priors=False)
+    assert [e.task_id for e in suite.episodes] == ["t0", "t1"]
+    with pytest.raises(SealError, match=r"trials_x\.jsonl:4:2: trial is not JSON"):
+        load_suite(tmp_path, "x", limit=4, types=[kind], with_priors=False)

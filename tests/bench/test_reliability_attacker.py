@@ -3,11 +3,12 @@ names; a pick of them ends cleanly (each failed on main before this round)."""
 
 from __future__ import annotations
 
+import functools
 from pathlib import Path
 
 import pytest
 
-from seal_cli.bench.reliability import hostile_cases, issue_cases, run_case
+from seal_cli.bench.reliability import Case, hostile_cases, issue_cases, run_case
 from seal_cli.bench.reliability_attacker import (
     alfred2d_data,
     attacker_cases,
@@ -38,8 +39,13 @@ from seal_cli.bench.reliability_review import cases, review_cases
 from seal_cli.bench.reliability_users import user_cases
 
 
+@functools.cache
+def _attacker() -> tuple[Case, ...]:
+    """:func:`attacker_cases`, made once for this module's tests that read them (about 2 CPU-seconds a making)."""
+    return tuple(attacker_cases())
+
 def test_the_cases_are_new_named_once_and_say_what_the_message_names() -> None:
-    attacker = list(attacker_cases())
+    attacker = list(_attacker())
     assert len(attacker) >= 80 and len({c.name for c in attacker}) == len(attacker)
     others = {c.name for c in [*issue_cases(), *hostile_cases(), *review_cases(), *user_cases(), *outsider_cases()]}
     assert {c.name for c in attacker}.isdisjoint(others)
@@ -59,7 +65,7 @@ def test_a_sparse_image_holds_its_patch_in_the_lower_left_corner() -> None:
                                   "A 5,000 digits in a vocabulary", "A a room of 62,831 vertices",
                                   "A a vocabulary of 300,000 words"])
 def test_picked_cases_end_cleanly(name: str) -> None:
-    outcome = run_case(next(c for c in attacker_cases() if c.name == name))
+    outcome = run_case(next(c for c in _attacker() if c.name == name))
     assert outcome.problems == []
 
 
@@ -337,7 +343,7 @@ def test_the_hostile26_cases_are_named_once_and_say_what_they_must() -> None:
     assert len({c.name for c in found}) == len(found) >= 31
     assert all(c.says for c in found if c.codes in ((0,), (1,)))
     assert sum(bool(c.vanish) for c in found) == 3 and any(c.parallel > 1 for c in found)
-    assert {c.name for c in found} <= {c.name for c in attacker_cases()}
+    assert {c.name for c in found} <= {c.name for c in _attacker()}
 
 
 @pytest.mark.parametrize("name", ["A plan with --holding ''", "A run with --vocabulary ''",
@@ -360,7 +366,7 @@ def test_the_hostile27_cases_are_named_once_and_say_what_they_must() -> None:
     assert len({c.name for c in found}) == len(found) >= 28
     assert all(c.says for c in found if c.codes == (1,))
     assert any(c.parallel > 1 for c in found) and any(c.signal for c in found)
-    assert {c.name for c in found} <= {c.name for c in attacker_cases()}
+    assert {c.name for c in found} <= {c.name for c in _attacker()}
 
 
 @pytest.mark.parametrize("name", ["A bench parse --corpus of a GPSR command without its fills",
@@ -384,7 +390,7 @@ def test_the_hostile28_cases_are_named_once_and_say_what_they_must() -> None:
     assert len({c.name for c in found}) == len(found) >= 25
     assert all(c.says for c in found if c.codes in ((0,), (1,)))
     assert sum(c.remove_cwd for c in found) >= 5 and sum(bool(c.unsaid) for c in found) == 2
-    assert {c.name for c in found} <= {c.name for c in attacker_cases()}
+    assert {c.name for c in found} <= {c.name for c in _attacker()}
 
 
 @pytest.mark.parametrize("name", ["A bench tasks --suite context_held_out --data /dev/null",
@@ -409,7 +415,7 @@ def test_the_hostile29_cases_are_named_once_and_say_what_they_must() -> None:
     assert len({c.name for c in found}) == len(found) >= 70
     assert all(c.says for c in found if c.codes in ((0,), (1,)))
     assert sum("ROS map" in c.name for c in found) >= 30
-    assert {c.name for c in found} <= {c.name for c in attacker_cases()}
+    assert {c.name for c in found} <= {c.name for c in _attacker()}
 
 
 @pytest.mark.parametrize("name", ["A import-bag -o onto its bag folder's metadata.yaml",
@@ -427,7 +433,7 @@ def test_the_hostile29_environment_cases_are_named_once_and_say_what_they_must()
     found = list(hostile29_environment_cases())
     assert len({c.name for c in found}) == len(found) >= 19 and all(c.env for c in found if "--jobs" not in c.name)
     assert all(c.says for c in found if c.codes in ((0,), (1,)))
-    assert {c.name for c in found} <= {c.name for c in attacker_cases()}
+    assert {c.name for c in found} <= {c.name for c in _attacker()}
 
 
 @pytest.mark.parametrize(("batch", "name"), [
@@ -459,4 +465,4 @@ def test_the_hostile30_cases_are_named_once_and_say_what_they_must() -> None:
     assert len({c.name for c in found}) == len(found) >= 80
     assert all(c.says for c in found if c.codes in ((0,), (1,)))
     assert sum("tagged" in c.name for c in found) >= 10 and sum("twice" in c.name for c in found) >= 6
-    assert {c.name for c in found} <= {c.name for c in attacker_cases()}
+    assert {c.name for c in found} <= {c.name for c in _attacker()}

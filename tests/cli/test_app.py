@@ -96,6 +96,14 @@ def test_the_console_script_runs_without_a_traceback(tmp_path: Path) -> None:
     assert "Traceback" not in run.stderr
 
 
+def test_the_processes_the_tests_start_run_this_trees_code(tmp_path: Path) -> None:
+    """The venv's seal may be installed from another checkout: ``python -m seal_cli`` from any folder runs the
+    seal_cli of the tree these tests are in (``tests/conftest.py`` puts it first on PYTHONPATH)."""
+    run = subprocess.run([sys.executable, "-c", "import seal_cli; print(seal_cli.__file__)"], cwd=tmp_path,
+                         capture_output=True, text=True, check=True)
+    assert Path(run.stdout.strip()) == Path(__file__).resolve().parents[2] / "seal_cli" / "__init__.py"
+
+
 def test_tables_are_not_cut_when_the_output_is_not_a_terminal() -> None:
     """A redirected table once truncated at rich's 80 columns ('holding(instru|ment)', 'particl…')."""
     import os
