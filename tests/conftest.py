@@ -7,6 +7,7 @@ import importlib.util
 import json
 import os
 import shutil
+import signal
 import subprocess
 import sys
 import tempfile
@@ -38,6 +39,17 @@ def pytest_configure(config: pytest.Config) -> None:
     paths = os.environ.get("PYTHONPATH", "").split(os.pathsep)
     if paths[0] != str(ROOT):
         os.environ["PYTHONPATH"] = os.pathsep.join([str(ROOT), *filter(None, paths)])
+    _interrupts_as_at_a_terminal()
+
+
+def _interrupts_as_at_a_terminal() -> None:
+    """A run started in a shell's background (``nohup pytest &``, a CI step) begins with SIGINT ignored, and every
+    process a test starts inherits that: the tests of Ctrl-C (a worker forked as SIGINT lands, a command interrupted
+    while it holds a half-built object) then saw no interrupt at all and failed. SIGINT is acted on here as at a
+    terminal (Python's own handler; a caught signal is reset to its default by ``exec``, so the commands the tests
+    start begin with it too), as ``bench reliability``'s ``_signals_reach_cases`` does for its cases."""
+    if signal.getsignal(signal.SIGINT) == signal.SIG_IGN:
+        signal.signal(signal.SIGINT, signal.default_int_handler)
 
 
 def pytest_unconfigure(config: pytest.Config) -> None:

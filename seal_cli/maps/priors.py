@@ -32,12 +32,13 @@ from typing import TYPE_CHECKING
 import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
+from seal_cli.frames.taxonomy import class_key
 from seal_cli.maps.geometry import OUTSIDE, as_points
 
 if TYPE_CHECKING:
     from seal_cli.maps.model import Map
 
-__all__ = ["FLOOR", "SAID", "Prior", "build_prior", "said_masses", "target_cells"]
+__all__ = ["FLOOR", "SAID", "Prior", "build_prior", "prior_of", "said_masses", "target_cells"]
 
 FLOOR = 0.02
 """The share of every prior spread uniformly over all free space."""
@@ -196,3 +197,12 @@ def build_prior(m: Map, cls: str, floor: float = FLOOR, said: tuple[str, ...] = 
     components = tuple((cells, (1 - floor) * mass / total) for cells, mass in parts.values())
     uniform = ((1 - floor) * rest + floor) / total
     return Prior(m, cls, components, uniform, masses)
+
+
+def prior_of(priors: Mapping[str, Mapping[str, float]], cls: str) -> dict[str, float]:
+    """A class's prior masses by class key (empty for a class the map has no prior of)."""
+    key = class_key(cls)
+    for name, masses in priors.items():
+        if class_key(name) == key:
+            return {class_key(t): float(m) for t, m in masses.items()}
+    return {}

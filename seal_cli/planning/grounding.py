@@ -363,7 +363,7 @@ class MapNames:
         best places stand when the priors keep the thing on any of them, or keep no such thing at all."""
         if self.carried is None or not words or any(r.kind != "place" for r in found):
             return found
-        from seal_cli.planning.keeping import prior_of
+        from seal_cli.maps.priors import prior_of
 
         prior = prior_of(self.map.priors, self.carried)
 

@@ -43,6 +43,7 @@ from dataclasses import dataclass
 from typing import TYPE_CHECKING
 
 from seal_cli.frames.taxonomy import Taxonomy, class_key, class_words
+from seal_cli.maps.priors import prior_of
 from seal_cli.planning.grounding import kind_of
 
 if TYPE_CHECKING:
@@ -90,15 +91,6 @@ def mass(prior: Mapping[str, float], spot: Spot) -> float:
 def rank(taxonomy: Taxonomy, prior: Mapping[str, float], spot: Spot) -> tuple[int, float]:
     """The sort key of a spot, best first: its tier, then more prior mass."""
     return tier(taxonomy, prior, spot), -round(mass(prior, spot), 9)
-
-
-def prior_of(priors: Mapping[str, Mapping[str, float]], cls: str) -> dict[str, float]:
-    """A class's prior masses by class key (empty for a class the map has no prior of)."""
-    key = class_key(cls)
-    for name, masses in priors.items():
-        if class_key(name) == key:
-            return {class_key(t): float(m) for t, m in masses.items()}
-    return {}
 
 
 def kept_place(taxonomy: Taxonomy, priors: Mapping[str, Mapping[str, float]], cls: str, spots: Sequence[Spot],

@@ -74,7 +74,8 @@ def unseen_there(commanded: Sequence[Binding], m: Map, class_of: Callable[[str],
     why). Nothing is said of a kind the robot knows a thing of (``known``: what it knows of the map, with the things the
     done commands handled, ``seal run --done``): it knows where that one lies (e2e31: "put it back" after `--done
     'bring the cup to the table'` said "it knows no cup until it sees one")."""
-    from seal_cli.planning.keeping import Spot, mass, prior_of
+    from seal_cli.maps.priors import prior_of
+    from seal_cli.planning.keeping import Spot, mass
 
     knows = {class_key(o.cls) for o in known.objects} if known is not None else set()
     said = []

@@ -1096,8 +1096,9 @@ def _likely_place(value: str, things: Things) -> str | None:
     drives to soonest from where it starts among equals (as its search looks first); None without a prior (e2e27:
     "put the ice cream in the fridge" chose the kitchen's fridge, nearer the start, where ``seal plan`` chose the
     shop's, beside the freezer the ice cream is taken from)."""
+    from seal_cli.maps.priors import prior_of
     from seal_cli.maps.reach import drive_lengths
-    from seal_cli.planning.keeping import mass, prior_of, spots_of
+    from seal_cli.planning.keeping import mass, spots_of
 
     m = things.map
     if m is None:
@@ -1323,7 +1324,8 @@ def _put_away(frame: Frame, evoked: Evoked, values: Mapping[str, tuple[str, ...]
     goes into a side table or a cabinet, whatever the thing) gives way to the map's prior of the thing's
     class, and stands when the map has none. Empty for any other frame."""
     from seal_cli.language.reference import back_unplaced
-    from seal_cli.planning.keeping import kept_place, prior_of, spots_of
+    from seal_cli.maps.priors import prior_of
+    from seal_cli.planning.keeping import kept_place, spots_of
 
     m = things.map
     said = evoked.elements.get("goal")
