@@ -9,7 +9,7 @@ from __future__ import annotations
 
 from collections.abc import Sequence
 
-from seal_cli.language.morphology import parts_of_speech, verb_lemma
+from seal_cli.language.morphology import inflected, parts_of_speech
 from seal_cli.language.tags import Tag
 from seal_cli.language.tokens import Word
 
@@ -37,5 +37,4 @@ def _a_state(low: str) -> bool:
     pos = parts_of_speech(low)
     if "noun" in pos or not low.isalpha():
         return False
-    lemma = verb_lemma(low)
-    return "adj" in pos or lemma is not None and lemma != low and not low.endswith("ing")
+    return "adj" in pos or inflected(low)

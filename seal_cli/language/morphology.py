@@ -22,7 +22,7 @@ from functools import lru_cache
 from pathlib import Path
 
 __all__ = ["adverb_no_noun", "counted", "gerund_lemma", "is_adjective", "is_adverb", "is_gradable", "is_plural",
-           "noun_lemma", "participles", "parts_of_speech", "plural_of", "verb_lemma"]
+           "inflected", "noun_lemma", "participles", "parts_of_speech", "plural_of", "verb_lemma"]
 
 
 class _Table:
@@ -180,6 +180,12 @@ def verb_lemma(word: str) -> str | None:
     """The verb a word is a form of (``"heated"`` → ``"heat"``), or None."""
     lemmas = _lemmas(word.lower(), "verb")
     return lemmas[0] if lemmas else None
+
+
+def inflected(low: str) -> bool:
+    """Whether a word is a verb's third-person or past form ("likes", "left", "locked"), not its base or -ing form."""
+    lemma = verb_lemma(low) if low.isalpha() else None
+    return bool(lemma) and lemma != low and not low.endswith("ing")
 
 
 @lru_cache(maxsize=65536)

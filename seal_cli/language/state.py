@@ -82,6 +82,7 @@ from seal_cli.language.morphology import (
     gerund_lemma,
     in_dictionary,
     in_verb_tables,
+    inflected,
     is_adjective,
     is_adverb,
     is_plural,
@@ -250,12 +251,6 @@ def statement_lead(word: Word, nxt: Word) -> bool:
         return True
     return low in ("and", "then", "quick") and (after in (",", "quick", "then") or is_adverb(after) or
                                                 after in SUBJECTS or subject_word(nxt))
-
-
-def inflected(low: str) -> bool:
-    """Whether a word is a verb's third-person or past form ("likes", "left"), not its base or -ing form."""
-    lemma = verb_lemma(low) if low.isalpha() else None
-    return bool(lemma) and lemma != low and not low.endswith("ing")
 
 
 def _infinitive(word: Word, n: int = 1) -> bool:

@@ -13,7 +13,7 @@ from collections.abc import Sequence
 
 from seal_cli.language.english import BE_WORDS, DETERMINERS, END_MARKS, KEEPING, POSSESSIVES, WISHED_PLACED
 from seal_cli.language.lexicon import Lexicon
-from seal_cli.language.morphology import in_verb_tables, parts_of_speech, verb_lemma
+from seal_cli.language.morphology import in_verb_tables, inflected, parts_of_speech, verb_lemma
 from seal_cli.language.state import longest_phrase
 from seal_cli.language.tokens import Word
 
@@ -52,7 +52,5 @@ def unmade_state(words: Sequence[Word], lexicon: Lexicon) -> tuple[Word, str] | 
 
 def _participle(low: str) -> bool:
     """A past participle of a verb English's tables list, no adjective ("locked", "painted"; not "closed", "open")."""
-    lemma = verb_lemma(low) if low.isalpha() else None
     pos = parts_of_speech(low)
-    return lemma is not None and lemma != low and not low.endswith("ing") and "adj" not in pos and \
-        "noun" not in pos and in_verb_tables(lemma)
+    return inflected(low) and "adj" not in pos and "noun" not in pos and in_verb_tables(verb_lemma(low) or "")
