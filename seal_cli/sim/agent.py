@@ -308,6 +308,10 @@ class Agent:
         key = class_key(cls)
         return [k for k in self.known.values() if k.cls == key]
 
+    def present(self, key: str) -> list[str]:
+        """The things of a class key the robot knows of that are still in the world (none it gave away or used up)."""
+        return [k.id for k in self.known.values() if k.cls == key and k.id in self.world.items]
+
     def held(self) -> Item | None:
         return self.world.items[self.world.robot.holding] if self.world.robot.holding else None
 
@@ -1570,7 +1574,7 @@ class Agent:
         look. How many it said."""
         key = self.class_of(value)
         held = self.held()
-        ids = {k.id for k in self.known.values() if k.cls == key and k.id in self.world.items}
+        ids = set(self.present(key))
         ids |= {held.id} if held is not None and held.key == key else set()
         order = list(self.world.items)
         for item_id in sorted(ids, key=order.index):
@@ -2180,7 +2184,7 @@ class Agent:
             if self.exhausted() is not None:
                 unseen.extend(r.name.replace("_", " ") for r in left)
                 break
-        n = sum(1 for k in self.known.values() if k.cls == key and k.id in self.world.items)
+        n = len(self.present(key))
         note = f" seen, but it could not look all over {', '.join(unseen)}" if unseen else ""
         return f"{counted(n, noun)} in the house{note}{self._none_known(key, noun, n)}"
 
@@ -2202,7 +2206,7 @@ class Agent:
         (the nearest next, as the crow flies), not the whole house; then the things of the kind the robot knows,
         wherever it saw them (those it saw on the way count too)."""
         short = self.look_where_kept(noun, spots)
-        n = sum(1 for k in self.known.values() if k.cls == key and k.id in self.world.items)
+        n = len(self.present(key))
         note = f" seen, but it could not look at {', '.join(short)}" if short else ""
         return f"{counted(n, noun)} where the map keeps them{note}"
 
